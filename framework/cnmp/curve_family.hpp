@@ -1,0 +1,43 @@
+// A synthetic family of one-dimensional curves parameterised by a context value
+// c, for trying CNMPs without simulation and for the learning tests:
+//   y(t) = (0.5 + 0.5 c) sin(pi (1 + c) t) + 0.3 c t,  t in [0, 1].
+// Each demonstration is one segment ("full") with x = t, y = y(t), context = c.
+#pragma once
+
+#include "core/config/field_rule.hpp"
+#include "envs/demonstrations.hpp"
+
+namespace corrmp {
+
+struct CurveFamilyParams {
+  int train = 30;
+  int validation = 10;
+  int time_steps = 50;
+  double context_min = 0.0;
+  double context_max = 1.0;
+  double noise = 0.0;
+
+  template <class Fields>
+  void describe(Fields& f) {
+    f("train", train, "number of training curves", at_least(1));
+    f("validation", validation, "number of validation curves", at_least(0));
+    f("time_steps", time_steps, "points per curve", at_least(2));
+    f("context_min", context_min, "smallest context value drawn");
+    f("context_max", context_max, "largest context value drawn");
+    f("noise", noise, "standard deviation of Gaussian noise added to y", at_least(0.0));
+  }
+};
+
+double curve_family_value(double context, double t);
+
+class CurveFamily : public DemonstrationSource {
+ public:
+  explicit CurveFamily(const CurveFamilyParams& params) : params_(params) {}
+  DemonstrationSplit collect(Rng& rng) override;
+  Demonstration make(double context, Rng& rng) const;
+
+ private:
+  CurveFamilyParams params_;
+};
+
+}  // namespace corrmp

@@ -1,0 +1,14 @@
+// Registration of the cnmp module's components.
+#include "cnmp/register_builtin.hpp"
+
+#include "cnmp/curve_family.hpp"
+
+namespace corrmp {
+
+void register_builtin_cnmp(Registry<DemonstrationSource>& demonstrations) {
+  demonstrations.add<CurveFamilyParams>(
+      "curve_family", "synthetic 1-D curves parameterised by a context value (no simulation)",
+      [](const CurveFamilyParams& p, const BuildContext&) { return new CurveFamily(p); });
+}
+
+}  // namespace corrmp

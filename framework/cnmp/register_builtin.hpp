@@ -1,0 +1,12 @@
+// Registration of the cnmp module's components (demonstration sources from
+// synthetic curves and files, CNMP policies).
+#pragma once
+
+#include "core/registry.hpp"
+#include "envs/demonstrations.hpp"
+
+namespace corrmp {
+
+void register_builtin_cnmp(Registry<DemonstrationSource>& demonstrations);
+
+}  // namespace corrmp

@@ -1,0 +1,26 @@
+// Loading a config: YAML file -> `include:` files deep-merged underneath it ->
+// command-line overrides `key.path=value` on top. DESIGN.md, "Contract: configs".
+#pragma once
+
+#include <string>
+#include <vector>
+
+#include "core/config/config_node.hpp"
+
+namespace corrmp {
+
+// Loads `path` and the files its top-level `include:` list names (relative to
+// the including file, merged in order, the including file last: maps are
+// deep-merged, scalars and lists replaced). The `include` key is removed.
+ConfigNode load_config_file(const std::string& path);
+
+// Applies one `key.path=value` override; the value is YAML (a scalar or a flow
+// list such as [1, 2]). Keys that are not in the file are added, and the strict
+// typed reader then rejects any the schema does not declare, naming the override.
+// Sequence elements are addressed by index (segments.1.context=...).
+void apply_override(ConfigNode& root, const std::string& assignment);
+
+// load_config_file followed by each override in order.
+ConfigNode load_config(const std::string& path, const std::vector<std::string>& overrides);
+
+}  // namespace corrmp

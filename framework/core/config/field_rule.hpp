@@ -1,0 +1,55 @@
+// Constraints a config field declares: required or defaulted, numeric range,
+// allowed strings. DESIGN.md, "Contract: configs" (out-of-range values are errors).
+#pragma once
+
+#include <limits>
+#include <string>
+#include <vector>
+
+namespace corrmp {
+
+struct FieldRule {
+  bool is_required = false;
+  double min = -std::numeric_limits<double>::infinity();
+  double max = std::numeric_limits<double>::infinity();
+  bool min_exclusive = false;
+  std::vector<std::string> allowed;  // empty: any string
+
+  FieldRule& required() {
+    is_required = true;
+    return *this;
+  }
+  FieldRule& at_least(double value) {
+    min = value;
+    min_exclusive = false;
+    return *this;
+  }
+  FieldRule& above(double value) {
+    min = value;
+    min_exclusive = true;
+    return *this;
+  }
+  FieldRule& at_most(double value) {
+    max = value;
+    return *this;
+  }
+
+  bool accepts(double value) const {
+    return (min_exclusive ? value > min : value >= min) && value <= max;
+  }
+  bool accepts(const std::string& value) const;
+  // "must be >= 1", "must be in [0, 1]", "must be one of a, b"; "" when unconstrained.
+  std::string describe() const;
+};
+
+inline FieldRule required() { return FieldRule{}.required(); }
+inline FieldRule at_least(double value) { return FieldRule{}.at_least(value); }
+inline FieldRule positive() { return FieldRule{}.above(0.0); }
+inline FieldRule in_range(double lo, double hi) { return FieldRule{}.at_least(lo).at_most(hi); }
+inline FieldRule one_of(std::vector<std::string> allowed) {
+  FieldRule rule;
+  rule.allowed = std::move(allowed);
+  return rule;
+}
+
+}  // namespace corrmp

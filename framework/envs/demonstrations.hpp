@@ -1,0 +1,52 @@
+// Demonstrations: per-segment trajectories of a skill as the human (or its
+// emulating expert) showed them, cut at the critical points into pre-MP, cor-MP
+// and post-MP (paper, Section III "Method"). A single-segment demonstration is
+// the monolithic case. Sources of demonstrations are registry components.
+#pragma once
+
+#include <Eigen/Core>
+#include <memory>
+#include <string>
+#include <vector>
+
+#include "core/seeds.hpp"
+
+namespace corrmp {
+
+// One segment of one demonstration. Row t of `x` holds the CNMP inputs of time
+// step t (column 0 is time normalised to [0, 1], further columns task
+// parameters), row t of `y` the outputs (for example gripper x, y, z in m).
+struct SegmentTrajectory {
+  std::string segment;  // "pre", "cor", "post", "full", ...
+  Eigen::MatrixXd x;
+  Eigen::MatrixXd y;
+  Eigen::VectorXd context;  // the segment's context vector; may be empty
+};
+
+struct Demonstration {
+  std::string scenario;  // JSON describing what was demonstrated
+  std::vector<SegmentTrajectory> segments;
+
+  const SegmentTrajectory* find(const std::string& segment) const {
+    for (const auto& s : segments) {
+      if (s.segment == segment) return &s;
+    }
+    return nullptr;
+  }
+};
+
+struct DemonstrationSplit {
+  std::vector<Demonstration> train;
+  std::vector<Demonstration> validation;
+};
+
+// Where demonstrations come from: an expert in a simulated environment, files
+// recorded by a researcher, or a synthetic family of curves.
+class DemonstrationSource {
+ public:
+  virtual ~DemonstrationSource() = default;
+  // Draws (or loads) the demonstrations; `rng` is this component's own stream.
+  virtual DemonstrationSplit collect(Rng& rng) = 0;
+};
+
+}  // namespace corrmp

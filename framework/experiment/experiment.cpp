@@ -1,0 +1,59 @@
+// Loading and validating an experiment config into components.
+#include "experiment/experiment.hpp"
+
+#include <fmt/format.h>
+
+#include <algorithm>
+#include <cctype>
+
+#include "core/config/config_loader.hpp"
+#include "core/seeds.hpp"
+
+namespace corrmp {
+
+namespace {
+
+void check_name(const ConfigNode& root, const std::string& name) {
+  const bool valid = !name.empty() && std::all_of(name.begin(), name.end(), [](char c) {
+    return std::isalnum(static_cast<unsigned char>(c)) || c == '_' || c == '-' || c == '.';
+  }) && name[0] != '.';
+  if (!valid) {
+    const ConfigNode* node = root.find("experiment")->find("name");
+    throw ConfigError(
+        node->where(), "experiment.name",
+        fmt::format("'{}' is not a valid name: use letters, digits, '_', '-', '.'", name));
+  }
+}
+
+}  // namespace
+
+Experiment load_experiment(const std::string& config_path,
+                           const std::vector<std::string>& overrides,
+                           const Registries& registries) {
+  Experiment experiment;
+  experiment.config_path = config_path;
+  experiment.root = std::make_unique<ConfigNode>(load_config(config_path, overrides));
+  ConfigReader::read(*experiment.root, "", experiment.config);
+  check_name(*experiment.root, experiment.config.experiment.name);
+
+  experiment.context.seeds = SeedTree(experiment.config.seed);
+  const ExperimentConfig& config = experiment.config;
+  if (config.demonstrations) {
+    experiment.demonstrations =
+        registries.demonstrations.create(*config.demonstrations, experiment.context);
+  }
+  for (const auto* section : {&config.environment, &config.context, &config.policy}) {
+    if (*section) {
+      const ConfigNode* type = (*section)->node->find("type");
+      throw ConfigError(
+          type->where(), (*section)->path + ".type",
+          fmt::format("no {} component is available in this build yet", (*section)->path));
+    }
+  }
+
+  experiment.resolved_yaml = experiment.root->to_yaml_string();
+  experiment.config_hash = fmt::format("{:016x}", fnv1a64(experiment.resolved_yaml));
+  return experiment;
+}
+
+}  // namespace corrmp

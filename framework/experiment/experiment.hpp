@@ -1,0 +1,33 @@
+// A loaded experiment: the resolved config tree, its typed top level and the
+// components built from the registries. Loading validates everything (each
+// component reads its parameters strictly), so a malformed config fails here,
+// before anything is written. DESIGN.md, "Contract: configs".
+#pragma once
+
+#include <memory>
+#include <string>
+#include <vector>
+
+#include "core/build_context.hpp"
+#include "core/config/config_node.hpp"
+#include "experiment/experiment_config.hpp"
+#include "experiment/registries.hpp"
+
+namespace corrmp {
+
+struct Experiment {
+  std::string config_path;
+  std::unique_ptr<ConfigNode> root;  // owns the nodes ComponentSpecs point into
+  ExperimentConfig config;
+  BuildContext context;
+  std::unique_ptr<DemonstrationSource> demonstrations;
+
+  std::string resolved_yaml;  // every value in force, defaults included
+  std::string config_hash;    // of resolved_yaml
+};
+
+// Throws ConfigError for any problem in the config or the overrides.
+Experiment load_experiment(const std::string& config_path,
+                           const std::vector<std::string>& overrides, const Registries& registries);
+
+}  // namespace corrmp

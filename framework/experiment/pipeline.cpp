@@ -1,0 +1,124 @@
+// The experiment pipeline and its run bookkeeping.
+#include "experiment/pipeline.hpp"
+
+#include <fmt/format.h>
+#include <spdlog/spdlog.h>
+
+#include <filesystem>
+#include <fstream>
+
+#include "core/interrupt.hpp"
+#include "core/json_writer.hpp"
+#include "core/logging.hpp"
+#include "experiment/provenance.hpp"
+#include "store/result_store.hpp"
+
+namespace corrmp {
+
+namespace fs = std::filesystem;
+
+namespace {
+
+void write_text(const fs::path& path, const std::string& text) {
+  std::ofstream out(path);
+  out << text;
+  if (!out) throw std::runtime_error("cannot write " + path.string());
+}
+
+void write_run_json(const fs::path& dir, const Experiment& experiment, int64_t run_id,
+                    const GitState& git, const std::string& started_at, const RunResult& result,
+                    const std::string& finished_at) {
+  JsonObject versions;
+  for (const auto& [name, version] : library_versions()) versions.add(name, version);
+  JsonObject run;
+  run.add("run_id", run_id)
+      .add("experiment", experiment.config.experiment.name)
+      .add("status", result.status)
+      .add("seed", static_cast<int64_t>(experiment.config.seed))
+      .add("config", experiment.config_path)
+      .add("config_hash", experiment.config_hash)
+      .add("git_commit", git.commit)
+      .add("git_dirty", git.dirty)
+      .add("host", host_name())
+      .add("started_at", started_at);
+  if (finished_at.empty()) {
+    run.add_null("finished_at");
+  } else {
+    run.add("finished_at", finished_at);
+  }
+  if (!result.failure.empty()) run.add("failure", result.failure);
+  run.add("libraries", versions);
+  write_text(dir / "run.json", run.str(2) + "\n");
+}
+
+// The stages. Each appends what it measured; none invents a number.
+void run_stages(Experiment& experiment, std::vector<TrialRecord>& trials,
+                std::vector<MetricRecord>& metrics) {
+  (void)trials;
+  if (!experiment.demonstrations) {
+    spdlog::warn("no demonstrations section: nothing to collect, train or evaluate");
+    return;
+  }
+  Rng rng = experiment.context.seeds.stream("demonstrations");
+  spdlog::info("collecting demonstrations ({})", experiment.config.demonstrations->type);
+  const DemonstrationSplit split = experiment.demonstrations->collect(rng);
+  check_interrupt();
+  spdlog::info("collected {} training and {} validation demonstrations", split.train.size(),
+               split.validation.size());
+  metrics.push_back({"demonstrations_train", static_cast<double>(split.train.size())});
+  metrics.push_back({"demonstrations_validation", static_cast<double>(split.validation.size())});
+  if (!experiment.config.policy) {
+    spdlog::warn("no policy section: stopping after collection");
+  }
+}
+
+}  // namespace
+
+RunResult run_pipeline(Experiment& experiment, const RunOptions& options) {
+  ResultStore store(options.db_path);
+  if (const int stale = store.mark_interrupted_runs(); stale > 0) {
+    spdlog::warn("{}: marked {} run(s) left 'running' by ended processes as interrupted",
+                 options.db_path, stale);
+  }
+  const GitState git = source_git_state();
+  RunResult result;
+  result.status = "running";
+  result.run_id = store.begin_run(RunRecord{experiment.config.experiment.name,
+                                            experiment.resolved_yaml, experiment.config_hash,
+                                            experiment.config.seed, git.commit, git.dirty, ""});
+  const std::string started_at = utc_timestamp();
+  const fs::path dir =
+      fs::path(options.out_dir) / experiment.config.experiment.name / std::to_string(result.run_id);
+  result.run_dir = dir.string();
+
+  std::vector<TrialRecord> trials;
+  std::vector<MetricRecord> metrics;
+  try {
+    fs::create_directories(dir);
+    store.set_out_dir(result.run_id, dir.string());
+    add_log_file((dir / "log.txt").string());
+    write_text(dir / "config.resolved.yaml", experiment.resolved_yaml);
+    write_run_json(dir, experiment, result.run_id, git, started_at, result, "");
+    spdlog::info("run {} of '{}' in {}", result.run_id, experiment.config.experiment.name,
+                 dir.string());
+    run_stages(experiment, trials, metrics);
+    store.complete_run(result.run_id, trials, metrics);
+    result.status = "completed";
+  } catch (const Interrupted& e) {
+    result.status = "interrupted";
+    result.failure = e.what();
+  } catch (const std::exception& e) {
+    result.status = "failed";
+    result.failure = e.what();
+  }
+  if (result.status != "completed") {
+    spdlog::error("run {} {}: {}", result.run_id, result.status, result.failure);
+    store.end_run(result.run_id, result.status, result.failure);
+  }
+  if (fs::exists(dir)) {
+    write_run_json(dir, experiment, result.run_id, git, started_at, result, utc_timestamp());
+  }
+  return result;
+}
+
+}  // namespace corrmp

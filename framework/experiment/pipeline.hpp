@@ -1,0 +1,29 @@
+// The experiment pipeline: collect -> fit contexts -> train -> evaluate ->
+// report, recording the run in the result store and its run directory
+// <out>/<experiment>/<run id>/ (config.resolved.yaml, run.json, log.txt).
+// Stages run only when their components are configured and exist.
+#pragma once
+
+#include <string>
+
+#include "experiment/experiment.hpp"
+
+namespace corrmp {
+
+struct RunOptions {
+  std::string db_path = "results/results.sqlite";
+  std::string out_dir = "results";
+};
+
+struct RunResult {
+  int64_t run_id = 0;
+  std::string status;  // completed, failed or interrupted
+  std::string run_dir;
+  std::string failure;
+};
+
+// Runs the experiment. Failures inside the run are caught and recorded (status
+// 'failed' with the reason); only a store that cannot be opened throws.
+RunResult run_pipeline(Experiment& experiment, const RunOptions& options);
+
+}  // namespace corrmp

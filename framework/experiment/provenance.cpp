@@ -1,0 +1,53 @@
+// Provenance of runs: git state and library versions.
+#include "experiment/provenance.hpp"
+
+#include <fmt/format.h>
+#include <spdlog/version.h>
+#include <sqlite3.h>
+#include <Eigen/Core>
+
+#include <array>
+#include <cstdio>
+#include <memory>
+
+namespace corrmp {
+
+namespace {
+
+// Runs a shell command; returns its standard output, or nullopt-like "" with ok=false.
+bool capture(const std::string& command, std::string& output) {
+  std::unique_ptr<FILE, int (*)(FILE*)> pipe(popen(command.c_str(), "r"), pclose);
+  if (!pipe) return false;
+  std::array<char, 256> buffer{};
+  output.clear();
+  while (fgets(buffer.data(), buffer.size(), pipe.get()) != nullptr) output += buffer.data();
+  return pclose(pipe.release()) == 0;
+}
+
+}  // namespace
+
+GitState source_git_state() {
+  GitState state;
+  const std::string git = fmt::format("git -C '{}' ", CORRMP_SOURCE_DIR);
+  std::string output;
+  if (capture(git + "rev-parse HEAD 2>/dev/null", output) && !output.empty()) {
+    state.commit = output.substr(0, output.find_first_of("\r\n"));
+    if (capture(git + "status --porcelain --untracked-files=no 2>/dev/null", output)) {
+      state.dirty = !output.empty();
+    }
+  }
+  return state;
+}
+
+std::vector<std::pair<std::string, std::string>> library_versions() {
+  return {
+      {"eigen",
+       fmt::format("{}.{}.{}", EIGEN_WORLD_VERSION, EIGEN_MAJOR_VERSION, EIGEN_MINOR_VERSION)},
+      {"sqlite", sqlite3_libversion()},
+      {"spdlog", fmt::format("{}.{}.{}", SPDLOG_VER_MAJOR, SPDLOG_VER_MINOR, SPDLOG_VER_PATCH)},
+      {"fmt", fmt::format("{}", FMT_VERSION)},
+      {"compiler", __VERSION__},
+  };
+}
+
+}  // namespace corrmp

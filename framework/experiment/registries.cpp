@@ -1,0 +1,38 @@
+// Built-in registries and their listing.
+#include "experiment/registries.hpp"
+
+#include <fmt/format.h>
+
+#include "cnmp/register_builtin.hpp"
+
+namespace corrmp {
+
+Registries builtin_registries() {
+  Registries registries;
+  register_builtin_cnmp(registries.demonstrations);
+  return registries;
+}
+
+namespace {
+
+template <class Base>
+std::string describe_registry(const std::string& section, const Registry<Base>& registry) {
+  std::string out = fmt::format("{} ({}s):\n", section, registry.kind());
+  if (registry.entries().empty()) return out + "  (none registered yet)\n";
+  for (const auto& entry : registry.entries()) {
+    out += fmt::format("  {:<22} {}\n", entry.name, entry.description);
+    for (const auto& p : entry.parameters) {
+      const std::string value = p.default_value.empty() ? p.rule : "= " + p.default_value;
+      out += fmt::format("      {:<26} {:<8} {:<14} {}\n", p.key, p.type, value, p.description);
+    }
+  }
+  return out;
+}
+
+}  // namespace
+
+std::string describe_registries(const Registries& registries) {
+  return describe_registry("demonstrations", registries.demonstrations);
+}
+
+}  // namespace corrmp

@@ -1,0 +1,23 @@
+// Every component registry, filled by one explicit register_builtin_*() per
+// module. DESIGN.md, "Core interfaces".
+#pragma once
+
+#include <string>
+
+#include "core/registry.hpp"
+#include "envs/demonstrations.hpp"
+
+namespace corrmp {
+
+struct Registries {
+  Registry<DemonstrationSource> demonstrations{"demonstration source"};
+};
+
+// The registries with every built-in component registered.
+Registries builtin_registries();
+
+// The text of `run_experiment --list`: each registry, its entries with a
+// one-line description, and each entry's parameters.
+std::string describe_registries(const Registries& registries);
+
+}  // namespace corrmp

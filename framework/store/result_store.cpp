@@ -1,0 +1,246 @@
+// The SQLite result store. DESIGN.md, "Contract: database minimum".
+#include "store/result_store.hpp"
+
+#include <fmt/format.h>
+#include <signal.h>
+#include <unistd.h>
+
+#include <cerrno>
+#include <ctime>
+#include <filesystem>
+
+#include "store/statement.hpp"
+
+namespace corrmp {
+
+namespace {
+
+constexpr const char* kSchema = R"sql(
+CREATE TABLE IF NOT EXISTS runs (
+  id INTEGER PRIMARY KEY,
+  experiment TEXT NOT NULL,
+  config TEXT NOT NULL,
+  config_hash TEXT NOT NULL,
+  seed INTEGER NOT NULL,
+  status TEXT NOT NULL CHECK (status IN ('running', 'completed', 'failed', 'interrupted')),
+  started_at TEXT NOT NULL,
+  finished_at TEXT,
+  git_commit TEXT,
+  git_dirty INTEGER,
+  out_dir TEXT,
+  host TEXT,
+  pid INTEGER,
+  failure TEXT
+);
+CREATE TABLE IF NOT EXISTS trials (
+  run_id INTEGER NOT NULL REFERENCES runs(id),
+  trial INTEGER NOT NULL,
+  scenario TEXT NOT NULL,
+  expected_action TEXT,
+  chosen_action TEXT,
+  success INTEGER NOT NULL,
+  failure TEXT
+);
+CREATE TABLE IF NOT EXISTS metrics (
+  run_id INTEGER NOT NULL REFERENCES runs(id),
+  name TEXT NOT NULL,
+  value REAL
+);
+CREATE INDEX IF NOT EXISTS trials_run ON trials(run_id);
+CREATE INDEX IF NOT EXISTS metrics_run ON metrics(run_id);
+)sql";
+
+bool process_alive(int64_t pid) {
+  if (pid <= 0) return false;
+  return kill(static_cast<pid_t>(pid), 0) == 0 || errno == EPERM;
+}
+
+}  // namespace
+
+std::string utc_timestamp() {
+  const std::time_t now = std::time(nullptr);
+  std::tm utc{};
+  gmtime_r(&now, &utc);
+  char buffer[32];
+  std::strftime(buffer, sizeof buffer, "%Y-%m-%dT%H:%M:%SZ", &utc);
+  return buffer;
+}
+
+std::string host_name() {
+  char buffer[256] = {};
+  if (gethostname(buffer, sizeof buffer - 1) != 0) return "unknown";
+  return buffer;
+}
+
+ResultStore::ResultStore(const std::string& path, int busy_timeout_ms) : path_(path) {
+  const auto parent = std::filesystem::path(path).parent_path();
+  if (!parent.empty()) std::filesystem::create_directories(parent);
+  if (sqlite3_open_v2(path.c_str(), &db_, SQLITE_OPEN_READWRITE | SQLITE_OPEN_CREATE, nullptr) !=
+      SQLITE_OK) {
+    const std::string message = db_ ? sqlite3_errmsg(db_) : "out of memory";
+    sqlite3_close(db_);
+    db_ = nullptr;
+    throw StoreError(fmt::format("{}: cannot open database: {}", path, message));
+  }
+  sqlite3_busy_timeout(db_, busy_timeout_ms);
+  try {
+    execute("PRAGMA journal_mode=WAL");
+    execute("PRAGMA foreign_keys=ON");
+    migrate();
+  } catch (...) {
+    sqlite3_close(db_);
+    db_ = nullptr;
+    throw;
+  }
+}
+
+ResultStore::~ResultStore() { sqlite3_close(db_); }
+
+void ResultStore::execute(const std::string& sql) {
+  char* error = nullptr;
+  if (sqlite3_exec(db_, sql.c_str(), nullptr, nullptr, &error) != SQLITE_OK) {
+    const std::string message = error ? error : sqlite3_errmsg(db_);
+    sqlite3_free(error);
+    throw StoreError(fmt::format("{}: {}", path_, message));
+  }
+}
+
+std::string ResultStore::query_text(const std::string& sql) {
+  Statement statement(db_, sql);
+  return statement.step() ? statement.column_text(0) : std::string();
+}
+
+int64_t ResultStore::query_int(const std::string& sql) {
+  Statement statement(db_, sql);
+  return statement.step() ? statement.column_int(0) : 0;
+}
+
+void ResultStore::transaction(const std::function<void()>& body) {
+  execute("BEGIN IMMEDIATE");
+  try {
+    body();
+    execute("COMMIT");
+  } catch (...) {
+    sqlite3_exec(db_, "ROLLBACK", nullptr, nullptr, nullptr);
+    throw;
+  }
+}
+
+void ResultStore::migrate() {
+  transaction([&] {
+    const int64_t version = query_int("PRAGMA user_version");
+    if (version > kSchemaVersion) {
+      throw StoreError(fmt::format(
+          "{}: database schema version {} is newer than this build's {}; use a newer build or "
+          "another --db",
+          path_, version, kSchemaVersion));
+    }
+    if (version < kSchemaVersion) {
+      execute(kSchema);
+      execute(fmt::format("PRAGMA user_version = {}", kSchemaVersion));
+    }
+  });
+}
+
+int ResultStore::mark_interrupted_runs() {
+  int marked = 0;
+  transaction([&] {
+    Statement running(db_, "SELECT id, pid FROM runs WHERE status = 'running' AND host = ?");
+    running.bind(1, host_name());
+    std::vector<int64_t> dead;
+    while (running.step()) {
+      if (!process_alive(running.column_int(1))) dead.push_back(running.column_int(0));
+    }
+    Statement mark(db_,
+                   "UPDATE runs SET status = 'interrupted', finished_at = ?, failure = "
+                   "'the process running it ended without finishing' WHERE id = ?");
+    for (const int64_t id : dead) {
+      mark.bind(1, utc_timestamp()).bind(2, id).run();
+      ++marked;
+    }
+  });
+  return marked;
+}
+
+int64_t ResultStore::begin_run(const RunRecord& run) {
+  int64_t id = 0;
+  transaction([&] {
+    Statement insert(db_,
+                     "INSERT INTO runs (experiment, config, config_hash, seed, status, "
+                     "started_at, git_commit, git_dirty, out_dir, host, pid) VALUES "
+                     "(?, ?, ?, ?, 'running', ?, ?, ?, ?, ?, ?)");
+    insert.bind(1, run.experiment)
+        .bind(2, run.config)
+        .bind(3, run.config_hash)
+        .bind(4, static_cast<int64_t>(run.seed))
+        .bind(5, utc_timestamp())
+        .bind(6, run.git_commit)
+        .bind(7, int64_t{run.git_dirty})
+        .bind(8, run.out_dir)
+        .bind(9, host_name())
+        .bind(10, static_cast<int64_t>(getpid()));
+    insert.run();
+    id = sqlite3_last_insert_rowid(db_);
+  });
+  return id;
+}
+
+void ResultStore::set_out_dir(int64_t run_id, const std::string& out_dir) {
+  transaction([&] {
+    Statement update(db_, "UPDATE runs SET out_dir = ? WHERE id = ?");
+    update.bind(1, out_dir).bind(2, run_id).run();
+  });
+}
+
+void ResultStore::insert_trials(int64_t run_id, const std::vector<TrialRecord>& trials) {
+  Statement insert(db_,
+                   "INSERT INTO trials (run_id, trial, scenario, expected_action, chosen_action, "
+                   "success, failure) VALUES (?, ?, ?, ?, ?, ?, ?)");
+  for (const auto& trial : trials) {
+    insert.bind(1, run_id)
+        .bind(2, int64_t{trial.trial})
+        .bind(3, trial.scenario)
+        .bind(4, trial.expected_action)
+        .bind(5, trial.chosen_action)
+        .bind(6, int64_t{trial.success});
+    if (trial.failure.empty()) {
+      insert.bind_null(7);
+    } else {
+      insert.bind(7, trial.failure);
+    }
+    insert.run();
+  }
+}
+
+void ResultStore::insert_metrics(int64_t run_id, const std::vector<MetricRecord>& metrics) {
+  Statement insert(db_, "INSERT INTO metrics (run_id, name, value) VALUES (?, ?, ?)");
+  for (const auto& metric : metrics)
+    insert.bind(1, run_id).bind(2, metric.name).bind(3, metric.value).run();
+}
+
+void ResultStore::add_trials(int64_t run_id, const std::vector<TrialRecord>& trials) {
+  transaction([&] { insert_trials(run_id, trials); });
+}
+
+void ResultStore::add_metrics(int64_t run_id, const std::vector<MetricRecord>& metrics) {
+  transaction([&] { insert_metrics(run_id, metrics); });
+}
+
+void ResultStore::complete_run(int64_t run_id, const std::vector<TrialRecord>& trials,
+                               const std::vector<MetricRecord>& metrics) {
+  transaction([&] {
+    insert_trials(run_id, trials);
+    insert_metrics(run_id, metrics);
+    Statement update(db_, "UPDATE runs SET status = 'completed', finished_at = ? WHERE id = ?");
+    update.bind(1, utc_timestamp()).bind(2, run_id).run();
+  });
+}
+
+void ResultStore::end_run(int64_t run_id, const std::string& status, const std::string& reason) {
+  transaction([&] {
+    Statement update(db_, "UPDATE runs SET status = ?, finished_at = ?, failure = ? WHERE id = ?");
+    update.bind(1, status).bind(2, utc_timestamp()).bind(3, reason).bind(4, run_id).run();
+  });
+}
+
+}  // namespace corrmp

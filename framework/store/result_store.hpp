@@ -1,0 +1,95 @@
+// The SQLite result store: runs, trials and metrics. WAL mode; every write in a
+// BEGIN IMMEDIATE transaction with a busy timeout, so several processes can share
+// one file; schema version in PRAGMA user_version (a newer one is refused).
+// DESIGN.md, "Contract: database minimum".
+#pragma once
+
+#include <sqlite3.h>
+
+#include <cstdint>
+#include <functional>
+#include <stdexcept>
+#include <string>
+#include <vector>
+
+namespace corrmp {
+
+class StoreError : public std::runtime_error {
+ public:
+  using std::runtime_error::runtime_error;
+};
+
+struct RunRecord {
+  std::string experiment;
+  std::string config;  // resolved YAML
+  std::string config_hash;
+  uint64_t seed = 0;
+  std::string git_commit;
+  bool git_dirty = false;
+  std::string out_dir;
+};
+
+struct TrialRecord {
+  int trial = 0;
+  std::string scenario;  // JSON
+  std::string expected_action;
+  std::string chosen_action;
+  bool success = false;
+  std::string failure;  // empty on success
+};
+
+struct MetricRecord {
+  std::string name;
+  double value = 0.0;
+};
+
+class ResultStore {
+ public:
+  static constexpr int kSchemaVersion = 1;
+
+  // Opens (creating the file and its folder if needed) and migrates the schema.
+  explicit ResultStore(const std::string& path, int busy_timeout_ms = 60000);
+  ~ResultStore();
+  ResultStore(const ResultStore&) = delete;
+  ResultStore& operator=(const ResultStore&) = delete;
+
+  // Marks runs left 'running' by processes of this host that no longer exist as
+  // 'interrupted'; returns how many.
+  int mark_interrupted_runs();
+
+  // Inserts a run with status 'running' and returns its id.
+  int64_t begin_run(const RunRecord& run);
+  void set_out_dir(int64_t run_id, const std::string& out_dir);
+  // Writes the run's trials and metrics and marks it completed, in one transaction.
+  void complete_run(int64_t run_id, const std::vector<TrialRecord>& trials,
+                    const std::vector<MetricRecord>& metrics);
+  // Marks the run 'failed' or 'interrupted' with a reason.
+  void end_run(int64_t run_id, const std::string& status, const std::string& reason);
+
+  void add_trials(int64_t run_id, const std::vector<TrialRecord>& trials);
+  void add_metrics(int64_t run_id, const std::vector<MetricRecord>& metrics);
+
+  // Runs `body` inside BEGIN IMMEDIATE ... COMMIT; rolls back if it throws.
+  void transaction(const std::function<void()>& body);
+  // Executes SQL without results (outside or inside a transaction).
+  void execute(const std::string& sql);
+  // The first column of the first row of a query, as text ("" when no row).
+  std::string query_text(const std::string& sql);
+  int64_t query_int(const std::string& sql);
+
+  const std::string& path() const { return path_; }
+  sqlite3* handle() { return db_; }
+
+ private:
+  void migrate();
+  void insert_trials(int64_t run_id, const std::vector<TrialRecord>& trials);
+  void insert_metrics(int64_t run_id, const std::vector<MetricRecord>& metrics);
+
+  std::string path_;
+  sqlite3* db_ = nullptr;
+};
+
+std::string utc_timestamp();  // ISO 8601, e.g. 2026-11-22T02:24:37Z
+std::string host_name();
+
+}  // namespace corrmp

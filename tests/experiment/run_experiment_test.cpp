@@ -1,0 +1,129 @@
+// End-to-end tests of the run_experiment command: exit codes, one-line config
+// errors with nothing written to the database, run directories, determinism.
+#include <gtest/gtest.h>
+#include <sys/wait.h>
+
+#include <filesystem>
+#include <fstream>
+#include <sstream>
+
+#include "config/test_files.hpp"
+#include "store/result_store.hpp"
+
+namespace corrmp {
+namespace {
+
+using testing::TempDir;
+
+struct Outcome {
+  int exit_code = -1;
+  std::string out;
+  std::string err;
+};
+
+std::string read_file(const std::string& path) {
+  std::ifstream in(path);
+  std::stringstream buffer;
+  buffer << in.rdbuf();
+  return buffer.str();
+}
+
+Outcome run(const TempDir& dir, const std::string& args) {
+  const std::string out = dir.file("stdout.txt"), err = dir.file("stderr.txt");
+  const std::string command = std::string(RUN_EXPERIMENT_BIN) + " " + args + " --db " +
+                              dir.file("r.sqlite") + " --out " + dir.file("runs") + " >" + out +
+                              " 2>" + err;
+  const int status = std::system(command.c_str());
+  return {WIFEXITED(status) ? WEXITSTATUS(status) : -1, read_file(out), read_file(err)};
+}
+
+const std::string kGood =
+    "experiment: {name: tiny}\nseed: 3\ndemonstrations: {type: curve_family, train: 4, "
+    "validation: 2, time_steps: 10}\n";
+
+TEST(RunExperiment, MalformedConfigsGiveOneLineExitTwoAndNoDatabaseWrites) {
+  TempDir dir;
+  const std::vector<std::pair<std::string, std::string>> cases = {
+      {"experiment: {name: a}\ndemonstrations: {type: curve_family, trian: 4}\n",
+       "bad.yaml:2:38: demonstrations.trian: unknown key (did you mean 'train'?)"},
+      {"seed: 1\n", "bad.yaml:1:1: experiment: missing required key"},
+      {"experiment: {name: a}\nseed: -1\n",
+       "bad.yaml:2:7: seed: expected a non-negative integer, got '-1'"},
+      {"experiment: {name: a}\ndemonstrations: {type: curve_family, train: 0}\n",
+       "bad.yaml:2:45: demonstrations.train: value 0 is out of range: must be >= 1"},
+      {"experiment: {name: a}\ndemonstrations: {type: curve_famly}\n",
+       "bad.yaml:2:24: demonstrations.type: unknown demonstration source 'curve_famly' (did you "
+       "mean 'curve_family'?); valid: curve_family"},
+      {"experiment: {name: 'a/b'}\n", "bad.yaml:1:20: experiment.name: 'a/b' is not a valid name"},
+      {"experiment: {name: a\n", "bad.yaml:2:1: YAML syntax error"},
+  };
+  for (const auto& [yaml, expected] : cases) {
+    const std::string path = dir.write("bad.yaml", yaml);
+    const Outcome outcome = run(dir, path);
+    EXPECT_EQ(outcome.exit_code, 2) << yaml;
+    EXPECT_NE(outcome.err.find(expected), std::string::npos)
+        << "expected: " << expected << "\ngot: " << outcome.err;
+    EXPECT_EQ(std::count(outcome.err.begin(), outcome.err.end(), '\n'), 1) << outcome.err;
+    EXPECT_FALSE(std::filesystem::exists(dir.file("r.sqlite"))) << yaml;
+  }
+  const Outcome override_error =
+      run(dir, dir.write("good.yaml", kGood) + " demonstrations.trains=3");
+  EXPECT_EQ(override_error.exit_code, 2);
+  EXPECT_NE(override_error.err.find("command-line override 'demonstrations.trains=3': "
+                                    "demonstrations.trains: unknown key (did you mean 'train'?)"),
+            std::string::npos)
+      << override_error.err;
+  EXPECT_EQ(run(dir, "--no-such-flag").exit_code, 2);
+  EXPECT_EQ(run(dir, dir.file("missing.yaml")).exit_code, 2);
+  EXPECT_FALSE(std::filesystem::exists(dir.file("r.sqlite")));
+}
+
+TEST(RunExperiment, PrintConfigShowsEveryResolvedValue) {
+  TempDir dir;
+  const Outcome outcome = run(dir, dir.write("good.yaml", kGood) + " seed=11 --print-config");
+  EXPECT_EQ(outcome.exit_code, 0) << outcome.err;
+  EXPECT_NE(outcome.out.find("seed: 11"), std::string::npos) << outcome.out;
+  EXPECT_NE(outcome.out.find("context_max: 1.0"), std::string::npos) << outcome.out;
+  EXPECT_NE(outcome.out.find("trials: 25"), std::string::npos) << outcome.out;
+  EXPECT_FALSE(std::filesystem::exists(dir.file("r.sqlite")));
+}
+
+TEST(RunExperiment, ListShowsRegistriesWithDescriptionsAndParameters) {
+  TempDir dir;
+  const Outcome outcome = run(dir, "--list");
+  EXPECT_EQ(outcome.exit_code, 0) << outcome.err;
+  EXPECT_NE(outcome.out.find("curve_family"), std::string::npos) << outcome.out;
+  EXPECT_NE(outcome.out.find("time_steps"), std::string::npos) << outcome.out;
+}
+
+TEST(RunExperiment, ARunIsRecordedWithItsDirectoryAndIsDeterministic) {
+  TempDir dir;
+  const std::string config = dir.write("good.yaml", kGood);
+  const Outcome first = run(dir, config);
+  ASSERT_EQ(first.exit_code, 0) << first.err;
+  const Outcome second = run(dir, config);
+  ASSERT_EQ(second.exit_code, 0) << second.err;
+
+  ResultStore store(dir.file("r.sqlite"));
+  EXPECT_EQ(store.query_int("SELECT COUNT(*) FROM runs WHERE status = 'completed'"), 2);
+  EXPECT_EQ(store.query_text("SELECT value FROM metrics WHERE run_id = 1 AND name = "
+                             "'demonstrations_train'"),
+            "4.0");
+  EXPECT_EQ(
+      store.query_int("SELECT COUNT(*) FROM (SELECT name, value FROM metrics WHERE run_id = 1 "
+                      "EXCEPT SELECT name, value FROM metrics WHERE run_id = 2)"),
+      0);
+  EXPECT_EQ(store.query_text("SELECT config_hash FROM runs WHERE id = 1"),
+            store.query_text("SELECT config_hash FROM runs WHERE id = 2"));
+  const std::string run_dir = store.query_text("SELECT out_dir FROM runs WHERE id = 1");
+  EXPECT_EQ(run_dir, dir.file("runs/tiny/1"));
+  EXPECT_NE(read_file(run_dir + "/config.resolved.yaml").find("time_steps: 10"), std::string::npos);
+  const std::string run_json = read_file(run_dir + "/run.json");
+  EXPECT_NE(run_json.find("\"status\": \"completed\""), std::string::npos) << run_json;
+  EXPECT_NE(run_json.find("\"git_commit\""), std::string::npos) << run_json;
+  EXPECT_NE(run_json.find("\"finished_at\": \"20"), std::string::npos) << run_json;
+  EXPECT_NE(read_file(run_dir + "/log.txt").find("collected 4 training"), std::string::npos);
+}
+
+}  // namespace
+}  // namespace corrmp
