@@ -2,6 +2,7 @@
 #include "cnmp/register_builtin.hpp"
 
 #include "cnmp/curve_family.hpp"
+#include "cnmp/trajectory_files.hpp"
 
 namespace corrmp {
 
@@ -9,6 +10,9 @@ void register_builtin_cnmp(Registry<DemonstrationSource>& demonstrations) {
   demonstrations.add<CurveFamilyParams>(
       "curve_family", "synthetic 1-D curves parameterised by a context value (no simulation)",
       [](const CurveFamilyParams& p, const BuildContext&) { return new CurveFamily(p); });
+  demonstrations.add<TrajectoryFilesParams>(
+      "trajectory_files", "recorded demonstrations from .npy ([N, T, D]) or CSV files",
+      [](const TrajectoryFilesParams& p, const BuildContext&) { return new TrajectoryFiles(p); });
 }
 
 }  // namespace corrmp

@@ -42,7 +42,10 @@ Experiment load_experiment(const std::string& config_path,
     experiment.demonstrations =
         registries.demonstrations.create(*config.demonstrations, experiment.context);
   }
-  for (const auto* section : {&config.environment, &config.context, &config.policy}) {
+  if (config.policy) {
+    experiment.policy = registries.policies.create(*config.policy, experiment.context);
+  }
+  for (const auto* section : {&config.environment, &config.context}) {
     if (*section) {
       const ConfigNode* type = (*section)->node->find("type");
       throw ConfigError(

@@ -21,6 +21,7 @@ struct Experiment {
   ExperimentConfig config;
   BuildContext context;
   std::unique_ptr<DemonstrationSource> demonstrations;
+  std::unique_ptr<Policy> policy;
 
   std::string resolved_yaml;  // every value in force, defaults included
   std::string config_hash;    // of resolved_yaml

@@ -10,6 +10,7 @@
 #include "core/interrupt.hpp"
 #include "core/json_writer.hpp"
 #include "core/logging.hpp"
+#include "experiment/offline_evaluation.hpp"
 #include "experiment/provenance.hpp"
 #include "store/result_store.hpp"
 
@@ -52,23 +53,45 @@ void write_run_json(const fs::path& dir, const Experiment& experiment, int64_t r
 }
 
 // The stages. Each appends what it measured; none invents a number.
-void run_stages(Experiment& experiment, std::vector<TrialRecord>& trials,
+void run_stages(Experiment& experiment, const fs::path& dir, std::vector<TrialRecord>& trials,
                 std::vector<MetricRecord>& metrics) {
   (void)trials;
   if (!experiment.demonstrations) {
     spdlog::warn("no demonstrations section: nothing to collect, train or evaluate");
     return;
   }
-  Rng rng = experiment.context.seeds.stream("demonstrations");
+  Rng collect_rng = experiment.context.seeds.stream("demonstrations");
   spdlog::info("collecting demonstrations ({})", experiment.config.demonstrations->type);
-  const DemonstrationSplit split = experiment.demonstrations->collect(rng);
+  const DemonstrationSplit split = experiment.demonstrations->collect(collect_rng);
   check_interrupt();
   spdlog::info("collected {} training and {} validation demonstrations", split.train.size(),
                split.validation.size());
   metrics.push_back({"demonstrations_train", static_cast<double>(split.train.size())});
   metrics.push_back({"demonstrations_validation", static_cast<double>(split.validation.size())});
-  if (!experiment.config.policy) {
+  if (!experiment.policy) {
     spdlog::warn("no policy section: stopping after collection");
+    return;
+  }
+
+  Rng train_rng = experiment.context.seeds.stream("policy.training");
+  for (const auto& summary : experiment.policy->fit(split.train, split.validation, train_rng)) {
+    spdlog::info(
+        "'{}': {} parameters, best validation error {:.4g} (max {:.4g}) at update {} "
+        "of {}, {:.1f} s",
+        summary.segment, summary.parameters, summary.report.best_validation.mean,
+        summary.report.best_validation.max, summary.report.best_update, summary.report.updates,
+        summary.report.seconds);
+    metrics.push_back({summary.segment + "_parameters", static_cast<double>(summary.parameters)});
+  }
+  experiment.policy->save((dir / "models").string());
+
+  const std::string csv_dir =
+      experiment.config.output.write_predictions ? (dir / "predictions").string() : "";
+  for (const auto& result : evaluate_offline(*experiment.policy, split.validation, csv_dir)) {
+    spdlog::info("'{}' on {} held-out demonstrations: error mean {:.4g}, max {:.4g}",
+                 result.segment, split.validation.size(), result.error.mean, result.error.max);
+    metrics.push_back({result.segment + "_error_mean", result.error.mean});
+    metrics.push_back({result.segment + "_error_max", result.error.max});
   }
 }
 
@@ -101,7 +124,7 @@ RunResult run_pipeline(Experiment& experiment, const RunOptions& options) {
     write_run_json(dir, experiment, result.run_id, git, started_at, result, "");
     spdlog::info("run {} of '{}' in {}", result.run_id, experiment.config.experiment.name,
                  dir.string());
-    run_stages(experiment, trials, metrics);
+    run_stages(experiment, dir, trials, metrics);
     store.complete_run(result.run_id, trials, metrics);
     result.status = "completed";
   } catch (const Interrupted& e) {

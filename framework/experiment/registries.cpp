@@ -4,12 +4,14 @@
 #include <fmt/format.h>
 
 #include "cnmp/register_builtin.hpp"
+#include "policies/register_builtin.hpp"
 
 namespace corrmp {
 
 Registries builtin_registries() {
   Registries registries;
   register_builtin_cnmp(registries.demonstrations);
+  register_builtin_policies(registries.policies);
   return registries;
 }
 
@@ -32,7 +34,8 @@ std::string describe_registry(const std::string& section, const Registry<Base>& 
 }  // namespace
 
 std::string describe_registries(const Registries& registries) {
-  return describe_registry("demonstrations", registries.demonstrations);
+  return describe_registry("demonstrations", registries.demonstrations) + "\n" +
+         describe_registry("policy", registries.policies);
 }
 
 }  // namespace corrmp

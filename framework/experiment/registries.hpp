@@ -6,11 +6,13 @@
 
 #include "core/registry.hpp"
 #include "envs/demonstrations.hpp"
+#include "policies/policy.hpp"
 
 namespace corrmp {
 
 struct Registries {
   Registry<DemonstrationSource> demonstrations{"demonstration source"};
+  Registry<Policy> policies{"policy"};
 };
 
 // The registries with every built-in component registered.

@@ -39,7 +39,8 @@ Outcome run(const TempDir& dir, const std::string& args) {
 
 const std::string kGood =
     "experiment: {name: tiny}\nseed: 3\ndemonstrations: {type: curve_family, train: 4, "
-    "validation: 2, time_steps: 10}\n";
+    "validation: 2, time_steps: 10}\npolicy:\n  type: segmented_cnmp\n  network: {width: 8}\n"
+    "  training: {updates: 200, validate_every: 50}\n";
 
 TEST(RunExperiment, MalformedConfigsGiveOneLineExitTwoAndNoDatabaseWrites) {
   TempDir dir;
@@ -69,6 +70,11 @@ TEST(RunExperiment, MalformedConfigsGiveOneLineExitTwoAndNoDatabaseWrites) {
   const Outcome override_error =
       run(dir, dir.write("good.yaml", kGood) + " demonstrations.trains=3");
   EXPECT_EQ(override_error.exit_code, 2);
+  const Outcome nested_error = run(dir, dir.file("good.yaml") + " policy.training.updatez=3");
+  EXPECT_EQ(nested_error.exit_code, 2);
+  EXPECT_NE(nested_error.err.find("policy.training.updatez: unknown key (did you mean 'updates'?)"),
+            std::string::npos)
+      << nested_error.err;
   EXPECT_NE(override_error.err.find("command-line override 'demonstrations.trains=3': "
                                     "demonstrations.trains: unknown key (did you mean 'train'?)"),
             std::string::npos)
@@ -94,6 +100,8 @@ TEST(RunExperiment, ListShowsRegistriesWithDescriptionsAndParameters) {
   EXPECT_EQ(outcome.exit_code, 0) << outcome.err;
   EXPECT_NE(outcome.out.find("curve_family"), std::string::npos) << outcome.out;
   EXPECT_NE(outcome.out.find("time_steps"), std::string::npos) << outcome.out;
+  EXPECT_NE(outcome.out.find("segmented_cnmp"), std::string::npos) << outcome.out;
+  EXPECT_NE(outcome.out.find("training.updates"), std::string::npos) << outcome.out;
 }
 
 TEST(RunExperiment, ARunIsRecordedWithItsDirectoryAndIsDeterministic) {
@@ -123,6 +131,18 @@ TEST(RunExperiment, ARunIsRecordedWithItsDirectoryAndIsDeterministic) {
   EXPECT_NE(run_json.find("\"git_commit\""), std::string::npos) << run_json;
   EXPECT_NE(run_json.find("\"finished_at\": \"20"), std::string::npos) << run_json;
   EXPECT_NE(read_file(run_dir + "/log.txt").find("collected 4 training"), std::string::npos);
+  // The policy stage: a model file, predictions and measured errors.
+  EXPECT_TRUE(std::filesystem::exists(run_dir + "/models/full.cnmp"));
+  EXPECT_NE(
+      read_file(run_dir + "/predictions/full.csv").find("demonstration,step,x0,y0,mean0,std0"),
+      std::string::npos);
+  const std::string error_mean =
+      store.query_text("SELECT value FROM metrics WHERE run_id = 1 AND name = 'full_error_mean'");
+  ASSERT_FALSE(error_mean.empty());
+  EXPECT_GT(std::stod(error_mean), 0.0);
+  EXPECT_LE(std::stod(error_mean),
+            std::stod(store.query_text("SELECT value FROM metrics WHERE run_id = 1 AND name = "
+                                       "'full_error_max'")));
 }
 
 }  // namespace

@@ -168,11 +168,26 @@ class ConfigReader {
     return encode_value(*value, path, rule);
   }
 
+  // Writes the current value of each field of a struct (a default list element).
+  struct FieldEncoder {
+    ConfigNode& map;
+    std::string path;
+    template <class T>
+    void operator()(const std::string& key, T& value, const std::string&,
+                    const FieldRule& rule = {}) {
+      if constexpr (is_optional<T>::value) {
+        if (!value) return;
+      }
+      map.set(key, encode_value(value, path + "." + key, rule), SourceLocation{"<default>", 0, 0});
+    }
+  };
+
   template <class T, std::enable_if_t<has_describe<T>::value, int> = 0>
   static ConfigNode encode_value(const T& value, const std::string& path, const FieldRule&) {
     ConfigNode out = ConfigNode::map(SourceLocation{"<default>", 0, 0});
+    FieldEncoder encoder{out, path};
     T copy = value;
-    read(out, path, copy);
+    copy.describe(encoder);
     return out;
   }
 

@@ -1,0 +1,155 @@
+// CNMP training loop: sampler, Adam updates, validation and best checkpoint.
+#include "cnmp/cnmp_trainer.hpp"
+
+#include <fmt/format.h>
+#include <spdlog/spdlog.h>
+
+#include <chrono>
+#include <numeric>
+#include <stdexcept>
+
+#include "cnmp/batch_sampler.hpp"
+#include "core/interrupt.hpp"
+#include "core/progress.hpp"
+#include "nn/adam.hpp"
+
+namespace corrmp {
+
+namespace {
+
+std::vector<NormalisedTrajectory> normalise(const CnmpModel& model,
+                                            const std::vector<CnmpTrajectory>& data) {
+  std::vector<NormalisedTrajectory> out;
+  for (const auto& t : data) {
+    Eigen::MatrixXd xy(t.x.rows(), t.x.cols() + t.y.cols());
+    xy << t.x, model.y_normaliser.apply(t.y);
+    out.push_back(
+        {xy.cast<float>(), model.context_normaliser.apply(t.context.transpose()).cast<float>()});
+  }
+  return out;
+}
+
+void check_shapes(const CnmpArchitecture& a, const std::vector<CnmpTrajectory>& data,
+                  const char* which) {
+  for (size_t i = 0; i < data.size(); ++i) {
+    const auto& t = data[i];
+    if (t.x.cols() != a.d_x || t.y.cols() != a.d_y || t.context.size() != a.d_context ||
+        t.x.rows() != t.y.rows() || t.x.rows() < 2) {
+      throw std::invalid_argument(fmt::format(
+          "{} trajectory {}: expected x with {} columns, y with {}, context of {} and at least 2 "
+          "time steps; got x {}x{}, y {}x{}, context {}",
+          which, i, a.d_x, a.d_y, a.d_context, t.x.rows(), t.x.cols(), t.y.rows(), t.y.cols(),
+          t.context.size()));
+    }
+  }
+}
+
+std::vector<Eigen::VectorXf> snapshot(const std::vector<nn::Parameter<float>>& params) {
+  std::vector<Eigen::VectorXf> values;
+  for (const auto& p : params) values.push_back(p.values());
+  return values;
+}
+
+void restore(const std::vector<nn::Parameter<float>>& params,
+             const std::vector<Eigen::VectorXf>& values) {
+  for (size_t i = 0; i < params.size(); ++i) params[i].values() = values[i];
+}
+
+Eigen::MatrixXd stack_rows(const std::vector<CnmpTrajectory>& data, bool context) {
+  Eigen::Index rows = 0;
+  for (const auto& t : data) rows += context ? 1 : t.y.rows();
+  const Eigen::Index cols = context ? data.front().context.size() : data.front().y.cols();
+  Eigen::MatrixXd out(rows, cols);
+  Eigen::Index row = 0;
+  for (const auto& t : data) {
+    if (context) {
+      out.row(row++) = t.context.transpose();
+    } else {
+      out.middleRows(row, t.y.rows()) = t.y;
+      row += t.y.rows();
+    }
+  }
+  return out;
+}
+
+}  // namespace
+
+double mean_row_distance(const Eigen::MatrixXd& a, const Eigen::MatrixXd& b) {
+  return (a - b).rowwise().norm().mean();
+}
+
+TrajectoryError prediction_error(CnmpModel& model, const std::vector<CnmpTrajectory>& data) {
+  TrajectoryError error;
+  if (data.empty()) return error;
+  for (const auto& t : data) {
+    Eigen::MatrixXd first(1, t.x.cols() + t.y.cols());
+    first << t.x.row(0), t.y.row(0);
+    const CnmpPrediction prediction = model.predict(first, t.context, t.x);
+    const double e = mean_row_distance(prediction.mean, t.y);
+    error.mean += e / static_cast<double>(data.size());
+    error.max = std::max(error.max, e);
+  }
+  return error;
+}
+
+TrainingReport train_cnmp(CnmpModel& model, const std::vector<CnmpTrajectory>& train,
+                          const std::vector<CnmpTrajectory>& validation,
+                          const CnmpTrainingParams& params, Rng& rng, const std::string& label) {
+  if (train.empty()) throw std::invalid_argument(label + ": no training trajectories");
+  const CnmpArchitecture& a = model.architecture();
+  check_shapes(a, train, "training");
+  check_shapes(a, validation, "validation");
+  model.y_normaliser = Normaliser::fit(stack_rows(train, false));
+  model.context_normaliser =
+      a.d_context > 0 ? Normaliser::fit(stack_rows(train, true)) : Normaliser::identity(0);
+  const auto data = normalise(model, train);
+  BatchSampler sampler(data, a, params);
+  const auto parameters = model.network().parameters();
+  nn::Adam<float> adam(parameters, nn::AdamOptions{params.learning_rate});
+
+  TrainingReport report;
+  std::vector<Eigen::VectorXf> best;
+  double best_error = std::numeric_limits<double>::infinity();
+  double loss_sum = 0.0;
+  int64_t loss_count = 0;
+  const auto start = std::chrono::steady_clock::now();
+  Progress progress(label, params.updates);
+  std::string status;
+  for (int64_t update = 1; update <= params.updates; ++update) {
+    sampler.draw(rng);
+    adam.zero_grad();
+    const float loss = sampler.step(model.network());
+    if (!std::isfinite(loss)) {
+      throw std::runtime_error(
+          fmt::format("{}: the training loss became {} at update {}", label, loss, update));
+    }
+    adam.step();
+    loss_sum += loss;
+    ++loss_count;
+    if (update % params.validate_every == 0 || update == params.updates) {
+      check_interrupt();
+      report.final_loss = loss_sum / loss_count;
+      loss_sum = 0.0;
+      loss_count = 0;
+      status = fmt::format("loss {:.3f}", report.final_loss);
+      if (!validation.empty()) {
+        const TrajectoryError error = prediction_error(model, validation);
+        status += fmt::format(", validation error {:.4g} (max {:.4g})", error.mean, error.max);
+        if (error.mean < best_error) {
+          best_error = error.mean;
+          best = snapshot(parameters);
+          report.best_validation = error;
+          report.best_update = update;
+        }
+      }
+    }
+    progress.advance(1, status);
+  }
+  if (!best.empty()) restore(parameters, best);
+  report.updates = params.updates;
+  report.seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+  progress.finish(status);
+  return report;
+}
+
+}  // namespace corrmp

@@ -1,0 +1,74 @@
+// CNMP training as in the public CNMP code (Seker et al., RSS 2019) and the
+// paper's Section IV training parameters: per update, a batch of B
+// demonstrations; n observations uniform in 1..max_observations and m targets
+// uniform in 1..max_targets, drawn disjoint from one random permutation of the
+// time steps; Adam on the Gaussian negative log-likelihood. Every
+// validate_every updates the held-out demonstrations are predicted from their
+// first point and context, and the best weights (lowest mean error) are kept.
+#pragma once
+
+#include <Eigen/Core>
+#include <string>
+#include <vector>
+
+#include "cnmp/cnmp_model.hpp"
+#include "core/config/field_rule.hpp"
+#include "core/seeds.hpp"
+
+namespace corrmp {
+
+struct CnmpTrainingParams {
+  int64_t updates = 20000;
+  int batch_size = 1;
+  int max_observations = 5;
+  int max_targets = 1;
+  double learning_rate = 1e-4;
+  int validate_every = 1000;
+
+  template <class Fields>
+  void describe(Fields& f) {
+    f("updates", updates, "Adam updates (the paper: 10M per model)", at_least(1));
+    f("batch_size", batch_size, "demonstrations per update (1 is the original CNMP)", at_least(1));
+    f("max_observations", max_observations, "observations per update: uniform in 1..this",
+      at_least(1));
+    f("max_targets", max_targets, "targets per update: uniform in 1..this", at_least(1));
+    f("learning_rate", learning_rate, "Adam learning rate (the paper: 1e-4)", positive());
+    f("validate_every", validate_every, "updates between validations", at_least(1));
+  }
+};
+
+// One trajectory for training, in data units: x (T x d_x, column 0 time in
+// [0, 1]), y (T x d_y), context (d_context values).
+struct CnmpTrajectory {
+  Eigen::MatrixXd x;
+  Eigen::MatrixXd y;
+  Eigen::VectorXd context;
+};
+
+struct TrajectoryError {
+  double mean = 0.0;  // over trajectories of the time-averaged Euclidean error
+  double max = 0.0;   // the largest time-averaged error of one trajectory
+};
+
+struct TrainingReport {
+  int64_t updates = 0;
+  int64_t best_update = 0;
+  double final_loss = 0.0;  // mean loss over the last validation interval
+  TrajectoryError best_validation;
+  double seconds = 0.0;
+};
+
+// Error of predictions conditioned on each trajectory's first point and context,
+// queried at all its time steps, against the trajectory (data units).
+TrajectoryError prediction_error(CnmpModel& model, const std::vector<CnmpTrajectory>& data);
+
+// Mean Euclidean distance between rows of two equally shaped matrices.
+double mean_row_distance(const Eigen::MatrixXd& a, const Eigen::MatrixXd& b);
+
+// Fits the normalisers to `train` and trains the model. Without validation
+// data the final weights are kept. `label` names the progress bar.
+TrainingReport train_cnmp(CnmpModel& model, const std::vector<CnmpTrajectory>& train,
+                          const std::vector<CnmpTrajectory>& validation,
+                          const CnmpTrainingParams& params, Rng& rng, const std::string& label);
+
+}  // namespace corrmp

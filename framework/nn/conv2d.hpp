@@ -1,0 +1,82 @@
+// 2-D convolution layer (NCHW, square kernel) for the autoencoder encoder of the paper,
+// Section "Learning the Context" (kernel 3, strides [2, 1, 2, 1, 2], filters [32..64]).
+//
+// Shapes: x is N x (Cin H W), y is N x (Cout Ho Wo), each row one image in C, H, W order
+// (nn/tensor.hpp). W is Cout x (Cin k k) (PyTorch (Cout, Cin, k, k), row-major), b has Cout
+// entries. Per image n, with U = im2col(x_n) (Cin k k x Ho Wo, nn/im2col.hpp):
+//   forward:   Y_n = W U + b 1^T                         (Y_n viewed as Cout x Ho Wo)
+//   backward:  dL/dW += dY_n U^T                          (accumulated)
+//              dL/db += dY_n 1                            (row sums, accumulated)
+//              dL/dx_n = col2im(W^T dY_n)                 (overwritten)
+// Initialisation follows torch.nn.Conv2d: W, b ~ U(-1/sqrt(Cin k k), 1/sqrt(Cin k k)), W first.
+// The layer owns only scratch column buffers, sized on first use; backward takes the forward
+// input again and recomputes U (cheap next to the products). The layer itself allocates nothing
+// after the first call, but products too large for Eigen's 128 KB stack blocking limit (the
+// autoencoder's 32x32 layers) let Eigen allocate its GEMM workspace: a few allocations per
+// call, negligible next to the millions of multiply-adds of such a product.
+#pragma once
+
+#include <string>
+#include <vector>
+
+#include "nn/buffer.hpp"
+#include "nn/conv_geometry.hpp"
+#include "nn/parameter.hpp"
+#include "nn/rng.hpp"
+#include "nn/tensor.hpp"
+
+namespace corrmp::nn {
+
+struct Conv2dOptions {
+  Index in_channels = 1;
+  Index out_channels = 1;
+  Index kernel_size = 3;
+  Index stride = 1;
+  Index padding = 0;
+};
+
+template <class S>
+class Conv2d {
+ public:
+  /// A convolution of images of spatial size input_height x input_width.
+  Conv2d(const Conv2dOptions& options, Index input_height, Index input_width, Rng& rng);
+
+  /// y = conv(x) + b. x is N x input_shape().size(), y is N x output_shape().size().
+  void forward(ConstMatRef<S> x, MatRef<S> y);
+  /// Accumulates the parameter gradients and writes dx (N x input_shape().size()).
+  void backward(ConstMatRef<S> x, ConstMatRef<S> dy, MatRef<S> dx);
+  /// Accumulates dL/dW and dL/db only (for a first layer whose input needs no gradient).
+  void accumulate_param_grad(ConstMatRef<S> x, ConstMatRef<S> dy);
+
+  /// {prefix + "weight" [Cout, Cin, k, k], prefix + "bias" [Cout]}.
+  std::vector<Parameter<S>> parameters(const std::string& prefix = "");
+
+  const Conv2dOptions& options() const { return options_; }
+  const ImageShape& input_shape() const { return geometry_.image; }
+  ImageShape output_shape() const {
+    return {options_.out_channels, geometry_.out_height, geometry_.out_width};
+  }
+  Index num_parameters() const { return weight_.size() + bias_.size(); }
+
+  Mat<S>& weight() { return weight_; }  ///< Cout x (Cin k k)
+  Vec<S>& bias() { return bias_; }      ///< Cout
+  const Mat<S>& weight_grad() const { return weight_grad_; }
+  const Vec<S>& bias_grad() const { return bias_grad_; }
+
+ private:
+  void check_batch(const char* where, ConstMatRef<S> x, ConstMatRef<S> dy) const;
+
+  Conv2dOptions options_;
+  PatchGeometry geometry_;
+  Mat<S> weight_;
+  Vec<S> bias_;
+  Mat<S> weight_grad_;
+  Vec<S> bias_grad_;
+  Buffer<S> columns_;       // U of one image
+  Buffer<S> column_grads_;  // W^T dY_n of one image
+};
+
+extern template class Conv2d<float>;
+extern template class Conv2d<double>;
+
+}  // namespace corrmp::nn

@@ -1,0 +1,65 @@
+// Fully connected layer, the building block of the CNMP encoder and decoder (paper, Section
+// "General Framework": encoder 3 layers, decoder 4 layers, width 128) and of the autoencoder's
+// latent projection (Section "Learning the Context").
+//
+// Shapes (batch-major, see nn/tensor.hpp): x is N x in, y is N x out, W is out x in (PyTorch
+// order), b has out entries.
+//   forward:   y = x W^T + 1 b^T
+//   backward:  dL/dW += dy^T x        (accumulated, call zero_grad between steps)
+//              dL/db += 1^T dy        (column sums of dy, accumulated)
+//              dL/dx  = dy W          (overwritten)
+// Initialisation follows torch.nn.Linear: W and b ~ U(-1/sqrt(in), 1/sqrt(in)), W drawn first
+// in row-major order, then b (draws from nn/rng.hpp, bit-identical across platforms).
+// The layer keeps no activations: backward takes the forward input again, so the caller decides
+// where activations live (nn/buffer.hpp) and nothing is allocated per call.
+#pragma once
+
+#include <string>
+#include <vector>
+
+#include "nn/parameter.hpp"
+#include "nn/rng.hpp"
+#include "nn/tensor.hpp"
+
+namespace corrmp::nn {
+
+template <class S>
+class Linear {
+ public:
+  /// A layer with `in` inputs and `out` outputs, initialised like torch.nn.Linear.
+  Linear(Index in, Index out, Rng& rng);
+
+  /// y = x W^T + 1 b^T. y must be N x out; it may not alias x.
+  void forward(ConstMatRef<S> x, MatRef<S> y) const;
+  /// Accumulates the parameter gradients and writes dx = dy W (N x in).
+  void backward(ConstMatRef<S> x, ConstMatRef<S> dy, MatRef<S> dx);
+  /// Accumulates dL/dW and dL/db only (for a first layer whose input needs no gradient).
+  void accumulate_param_grad(ConstMatRef<S> x, ConstMatRef<S> dy);
+  /// Writes dx = dy W only.
+  void input_grad(ConstMatRef<S> dy, MatRef<S> dx) const;
+
+  /// {prefix + "weight" [out, in], prefix + "bias" [out]}.
+  std::vector<Parameter<S>> parameters(const std::string& prefix = "");
+
+  Index in_features() const { return weight_.cols(); }
+  Index out_features() const { return weight_.rows(); }
+  Index num_parameters() const { return weight_.size() + bias_.size(); }
+
+  Mat<S>& weight() { return weight_; }
+  const Mat<S>& weight() const { return weight_; }
+  Eigen::Matrix<S, 1, Eigen::Dynamic>& bias() { return bias_; }
+  const Eigen::Matrix<S, 1, Eigen::Dynamic>& bias() const { return bias_; }
+  const Mat<S>& weight_grad() const { return weight_grad_; }
+  const Eigen::Matrix<S, 1, Eigen::Dynamic>& bias_grad() const { return bias_grad_; }
+
+ private:
+  Mat<S> weight_;
+  Eigen::Matrix<S, 1, Eigen::Dynamic> bias_;
+  Mat<S> weight_grad_;
+  Eigen::Matrix<S, 1, Eigen::Dynamic> bias_grad_;
+};
+
+extern template class Linear<float>;
+extern template class Linear<double>;
+
+}  // namespace corrmp::nn

@@ -1,0 +1,46 @@
+// A policy learned from demonstrations: it generates each segment's trajectory
+// from the state at the segment's start and the segment's context (paper,
+// Section III: pre-MP, cor-MP and post-MP, or one monolithic primitive).
+#pragma once
+
+#include <Eigen/Core>
+#include <string>
+#include <vector>
+
+#include "cnmp/cnmp_model.hpp"
+#include "cnmp/cnmp_trainer.hpp"
+#include "core/seeds.hpp"
+#include "envs/demonstrations.hpp"
+
+namespace corrmp {
+
+struct PolicyTrainingSummary {
+  std::string segment;
+  TrainingReport report;
+  int64_t parameters = 0;
+};
+
+class Policy {
+ public:
+  virtual ~Policy() = default;
+
+  // Learns every segment network from the training demonstrations, choosing
+  // checkpoints on the validation demonstrations.
+  virtual std::vector<PolicyTrainingSummary> fit(const std::vector<Demonstration>& train,
+                                                 const std::vector<Demonstration>& validation,
+                                                 Rng& rng) = 0;
+
+  // The segments this policy generates, in execution order.
+  virtual std::vector<std::string> segments() const = 0;
+
+  // The trajectory of `segment` conditioned on `observations` (rows x then y,
+  // typically the segment's start point) and `context`, at query inputs `query_x`.
+  virtual CnmpPrediction generate(const std::string& segment, const Eigen::MatrixXd& observations,
+                                  const Eigen::VectorXd& context,
+                                  const Eigen::MatrixXd& query_x) = 0;
+
+  // Writes the trained networks as model files into `directory`.
+  virtual void save(const std::string& directory) = 0;
+};
+
+}  // namespace corrmp

@@ -1,0 +1,16 @@
+// Registration of the policies module's components.
+#include "policies/register_builtin.hpp"
+
+#include "policies/segmented_cnmp.hpp"
+
+namespace corrmp {
+
+void register_builtin_policies(Registry<Policy>& policies) {
+  policies.add<SegmentedCnmpParams>(
+      "segmented_cnmp", "one CNMP per segment, each conditioned on its start and context (paper)",
+      [](const SegmentedCnmpParams& p, const BuildContext& context) {
+        return new SegmentedCnmp(p, context.seeds.seed_for("policy.init"));
+      });
+}
+
+}  // namespace corrmp

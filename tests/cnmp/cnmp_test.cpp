@@ -1,0 +1,148 @@
+// Tests of the CNMP: gradients of the whole model against finite differences,
+// parameter counting and budgets, model-file round trips.
+#include "cnmp/cnmp.hpp"
+
+#include <gtest/gtest.h>
+
+#include <random>
+
+#include "cnmp/cnmp_model.hpp"
+#include "config/test_files.hpp"
+
+namespace corrmp {
+namespace {
+
+using MatD = nn::Mat<double>;
+
+CnmpArchitecture small_architecture() {
+  CnmpArchitecture a;
+  a.d_x = 2;
+  a.d_y = 3;
+  a.d_context = 2;
+  a.encoder_layers = 2;
+  a.decoder_layers = 3;
+  a.width = 6;
+  a.min_std = 0.05;
+  return a;
+}
+
+MatD random_matrix(std::mt19937_64& rng, int rows, int cols) {
+  std::uniform_real_distribution<double> u(-1.0, 1.0);
+  MatD m(rows, cols);
+  for (int i = 0; i < m.size(); ++i) m.data()[i] = u(rng);
+  return m;
+}
+
+TEST(CnmpGrad, TrainStepMatchesFiniteDifferencesWithVariableCounts) {
+  const CnmpArchitecture a = small_architecture();
+  nn::Rng init(5);
+  Cnmp<double> model(a, init);
+  std::mt19937_64 rng(11);
+  const CnmpBatchCounts counts{{2, 3}, {1, 2}};  // two tasks, different counts
+  const MatD observations = random_matrix(rng, 5, a.d_x + a.d_y);
+  const MatD contexts = random_matrix(rng, 2, a.d_context);
+  const MatD target_x = random_matrix(rng, 3, a.d_x);
+  const MatD target_y = random_matrix(rng, 3, a.d_y);
+
+  auto params = model.parameters();
+  nn::zero_grad(params);
+  model.train_step(observations, contexts, target_x, target_y, counts);
+  std::vector<Eigen::VectorXd> analytic;
+  for (const auto& p : params) analytic.push_back(p.grads());
+
+  const double h = 1e-6;
+  double worst = 0.0;
+  for (size_t k = 0; k < params.size(); ++k) {
+    for (nn::Index i = 0; i < params[k].size(); ++i) {
+      double& w = params[k].value[i];
+      const double saved = w;
+      w = saved + h;
+      const double up = model.train_step(observations, contexts, target_x, target_y, counts);
+      w = saved - h;
+      const double down = model.train_step(observations, contexts, target_x, target_y, counts);
+      w = saved;
+      const double numeric = (up - down) / (2 * h);
+      const double error = std::abs(numeric - analytic[k][i]) /
+                           std::max(1.0, std::abs(numeric) + std::abs(analytic[k][i]));
+      worst = std::max(worst, error);
+    }
+  }
+  EXPECT_LT(worst, 1e-6);
+}
+
+TEST(CnmpArchitecture, ParameterCountMatchesTheNetworkAndBudgetsPickTheClosestWidth) {
+  CnmpArchitecture a;
+  a.d_x = 1;
+  a.d_y = 3;
+  a.d_context = 1;
+  nn::Rng init(1);
+  Cnmp<float> paper(a, init);
+  EXPECT_EQ(cnmp_parameter_count(a), paper.parameter_count());
+  // Encoder 4->128->128->128, decoder 130->128->128->128->6.
+  EXPECT_EQ(cnmp_parameter_count(a), (4 * 128 + 128) + 2 * (128 * 128 + 128) + (130 * 128 + 128) +
+                                         2 * (128 * 128 + 128) + (128 * 6 + 6));
+  const int64_t three_networks = 3 * cnmp_parameter_count(a);
+  const int width = width_for_parameter_budget(a, three_networks);
+  CnmpArchitecture wide = a;
+  wide.width = width;
+  const int64_t gap = std::llabs(cnmp_parameter_count(wide) - three_networks);
+  for (int other : {width - 1, width + 1}) {
+    wide.width = other;
+    EXPECT_GE(std::llabs(cnmp_parameter_count(wide) - three_networks), gap);
+  }
+  EXPECT_GT(width, 128);
+}
+
+TEST(CnmpModel, SaveAndLoadGiveIdenticalPredictions) {
+  testing::TempDir dir;
+  CnmpArchitecture a = small_architecture();
+  CnmpModel model(a, 3);
+  model.y_normaliser = {Eigen::RowVector3d(0.1, 0.2, 0.3), Eigen::RowVector3d(2.0, 3.0, 4.0)};
+  model.context_normaliser = {Eigen::RowVector2d(1.0, -1.0), Eigen::RowVector2d(0.5, 0.25)};
+  Eigen::MatrixXd observations(2, 5);
+  observations << 0.0, 0.1, 1.0, 2.0, 3.0, 0.5, 0.2, 1.5, 2.5, 3.5;
+  const Eigen::Vector2d context(0.3, -0.7);
+  const Eigen::MatrixXd query = Eigen::MatrixXd::Random(7, 2);
+  const CnmpPrediction before = model.predict(observations, context, query);
+  model.save(dir.file("m.cnmp"));
+  const auto loaded = CnmpModel::load(dir.file("m.cnmp"));
+  const CnmpPrediction after = loaded->predict(observations, context, query);
+  EXPECT_EQ(before.mean, after.mean);
+  EXPECT_EQ(before.std, after.std);
+  EXPECT_TRUE((after.std.array() > 0).all());
+}
+
+TEST(CnmpModel, LoadingAMismatchedOrForeignFileFails) {
+  testing::TempDir dir;
+  CnmpModel model(small_architecture(), 3);
+  model.save(dir.file("m.cnmp"));
+  nn::ModelFile file = nn::ModelFile::read(dir.file("m.cnmp"));
+  CnmpArchitecture other = small_architecture();
+  other.width = 7;
+  nn::Rng init(1);
+  Cnmp<float> wrong(other, init);
+  try {
+    wrong.load_from(file);
+    FAIL() << "a width mismatch must be reported";
+  } catch (const std::runtime_error& e) {
+    EXPECT_NE(std::string(e.what()).find("differs from the expected"), std::string::npos);
+  }
+  nn::ModelFile foreign;
+  foreign.hyper["model"] = "autoencoder";
+  foreign.write(dir.file("ae.bin"));
+  EXPECT_THROW(CnmpModel::load(dir.file("ae.bin")), std::runtime_error);
+}
+
+TEST(CnmpModel, PredictRejectsBadShapes) {
+  CnmpModel model(small_architecture(), 3);
+  const Eigen::MatrixXd query = Eigen::MatrixXd::Zero(3, 2);
+  EXPECT_THROW(model.predict(Eigen::MatrixXd::Zero(1, 4), Eigen::Vector2d::Zero(), query),
+               std::invalid_argument);
+  EXPECT_THROW(model.predict(Eigen::MatrixXd::Zero(1, 5), Eigen::Vector3d::Zero(), query),
+               std::invalid_argument);
+  EXPECT_THROW(model.predict(Eigen::MatrixXd::Zero(0, 5), Eigen::Vector2d::Zero(), query),
+               std::invalid_argument);
+}
+
+}  // namespace
+}  // namespace corrmp

@@ -1,0 +1,96 @@
+// End-to-end tests of train_cnmp and predict_cnmp on CSV demonstrations.
+#include <fmt/format.h>
+#include <gtest/gtest.h>
+#include <sys/wait.h>
+
+#include <cmath>
+#include <fstream>
+#include <sstream>
+
+#include "cnmp/csv_reader.hpp"
+#include "config/test_files.hpp"
+
+namespace corrmp {
+namespace {
+
+using testing::TempDir;
+
+int run(const std::string& command, std::string* err = nullptr, const TempDir* dir = nullptr) {
+  std::string full = command;
+  if (dir != nullptr) full += " 2>" + dir->file("err.txt");
+  const int status = std::system(full.c_str());
+  if (err != nullptr && dir != nullptr) {
+    std::ifstream in(dir->file("err.txt"));
+    std::stringstream buffer;
+    buffer << in.rdbuf();
+    *err = buffer.str();
+  }
+  return WIFEXITED(status) ? WEXITSTATUS(status) : -1;
+}
+
+// Straight lines from (0, 0) to (c, 2c) over time, with context c.
+void write_demos(const TempDir& dir) {
+  for (int d = 0; d < 12; ++d) {
+    const double c = 0.1 + 0.08 * d;
+    std::string csv = "time,px,py,goal\n";
+    for (int t = 0; t < 20; ++t) {
+      const double s = t / 19.0;
+      csv += fmt::format("{},{},{},{}\n", 0.5 * t, c * s, 2 * c * s, c);
+    }
+    dir.write(fmt::format("demos/{:02}.csv", d), csv);
+  }
+}
+
+TEST(CnmpTools, TrainOnCsvFilesThenPredictFromAStartPointAndContext) {
+  TempDir dir;
+  write_demos(dir);
+  const std::string model = dir.file("line.cnmp");
+  ASSERT_EQ(run(fmt::format("{} --data {} --time time --y px,py --context goal --updates 4000 "
+                            "--batch 8 --max-targets 5 --lr 1e-3 --width 32 --out {} --quiet",
+                            TRAIN_CNMP_BIN, dir.file("demos"), model)),
+            0);
+  const std::string csv = dir.file("p.csv");
+  ASSERT_EQ(run(fmt::format("{} --model {} --obs 0,0,0 --context 0.5 --steps 11 --out {}",
+                            PREDICT_CNMP_BIN, model, csv)),
+            0);
+  const RawTrajectory p = read_csv_trajectory(csv);
+  ASSERT_EQ(p.columns, (std::vector<std::string>{"x0", "mean0", "mean1", "std0", "std1"}));
+  ASSERT_EQ(p.values.rows(), 11);
+  // An unseen context (0.5): the line ends near (0.5, 1.0).
+  EXPECT_NEAR(p.values(10, 1), 0.5, 0.05);
+  EXPECT_NEAR(p.values(10, 2), 1.0, 0.1);
+  EXPECT_NEAR(p.values(5, 1), 0.25, 0.05);
+  EXPECT_TRUE((p.values.rightCols(2).array() > 0).all());
+}
+
+TEST(CnmpTools, BadInputGivesAClearErrorAndNonZeroExit) {
+  TempDir dir;
+  write_demos(dir);
+  std::string err;
+  EXPECT_EQ(run(fmt::format("{} --data {} --y nope --out {}", TRAIN_CNMP_BIN, dir.file("demos"),
+                            dir.file("m.cnmp")),
+                &err, &dir),
+            1);
+  EXPECT_NE(err.find("no column 'nope'"), std::string::npos) << err;
+  EXPECT_EQ(run(fmt::format("{} --data {}", TRAIN_CNMP_BIN, dir.file("demos")), &err, &dir), 2);
+  EXPECT_EQ(run(fmt::format("{} --model {} --obs 0,0", PREDICT_CNMP_BIN, dir.file("none.cnmp")),
+                &err, &dir),
+            1);
+  EXPECT_NE(err.find("none.cnmp"), std::string::npos) << err;
+  ASSERT_EQ(run(fmt::format("{} --data {} --time time --y px,py --context goal --updates 10 "
+                            "--width 4 --out {} --quiet",
+                            TRAIN_CNMP_BIN, dir.file("demos"), dir.file("m.cnmp"))),
+            0);
+  EXPECT_EQ(
+      run(fmt::format("{} --model {} --obs 0,0 --context 1", PREDICT_CNMP_BIN, dir.file("m.cnmp")),
+          &err, &dir),
+      2);
+  EXPECT_NE(err.find("needs 1 x and 2 y values"), std::string::npos) << err;
+  EXPECT_EQ(run(fmt::format("{} --model {} --obs 0,0,0 --context a", PREDICT_CNMP_BIN,
+                            dir.file("m.cnmp")),
+                &err, &dir),
+            2);
+}
+
+}  // namespace
+}  // namespace corrmp

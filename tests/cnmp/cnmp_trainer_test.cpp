@@ -1,0 +1,98 @@
+// Tests of CNMP training: learning a context-parameterised family of curves
+// to a set error on contexts not trained on, and determinism.
+#include "cnmp/cnmp_trainer.hpp"
+
+#include <gtest/gtest.h>
+
+#include "cnmp/curve_family.hpp"
+
+namespace corrmp {
+namespace {
+
+std::vector<CnmpTrajectory> curves(const std::vector<Demonstration>& demos) {
+  std::vector<CnmpTrajectory> out;
+  for (const auto& d : demos) {
+    const auto& s = d.segments.front();
+    out.push_back({s.x, s.y, s.context});
+  }
+  return out;
+}
+
+struct Fixture {
+  std::vector<CnmpTrajectory> train, validation;
+  Fixture() {
+    CurveFamilyParams p;
+    p.train = 20;
+    p.validation = 10;
+    CurveFamily family(p);
+    Rng rng(2);
+    const DemonstrationSplit split = family.collect(rng);
+    train = curves(split.train);
+    validation = curves(split.validation);
+  }
+};
+
+CnmpArchitecture curve_architecture() {
+  CnmpArchitecture a;
+  a.d_context = 1;
+  a.width = 32;
+  return a;
+}
+
+CnmpTrainingParams quick_training() {
+  CnmpTrainingParams p;
+  p.updates = 6000;
+  p.batch_size = 8;
+  p.max_targets = 5;
+  p.learning_rate = 1e-3;
+  p.validate_every = 500;
+  return p;
+}
+
+TEST(CnmpTrainer, LearnsACurveFamilyAndGeneralisesToUnseenContexts) {
+  const Fixture data;
+  CnmpModel model(curve_architecture(), 1);
+  const TrajectoryError untrained = prediction_error(model, data.validation);
+  Rng rng(4);
+  const TrainingReport report =
+      train_cnmp(model, data.train, data.validation, quick_training(), rng, "curves");
+  const TrajectoryError trained = prediction_error(model, data.validation);
+  // The curves span about 1.5 in y; unseen contexts must be predicted closely.
+  EXPECT_LT(trained.mean, 0.03) << "untrained " << untrained.mean;
+  EXPECT_LT(trained.max, 0.08);
+  EXPECT_LT(trained.mean, untrained.mean / 10);
+  EXPECT_DOUBLE_EQ(trained.mean, report.best_validation.mean);
+  EXPECT_GT(report.best_update, 0);
+}
+
+TEST(CnmpTrainer, SameSeedGivesIdenticalWeights) {
+  const Fixture data;
+  CnmpTrainingParams p = quick_training();
+  p.updates = 300;
+  auto train = [&] {
+    CnmpModel model(curve_architecture(), 9);
+    Rng rng(9);
+    train_cnmp(model, data.train, data.validation, p, rng, "determinism");
+    std::vector<float> weights;
+    for (const auto& param : model.network().parameters()) {
+      weights.insert(weights.end(), param.value, param.value + param.size());
+    }
+    return weights;
+  };
+  const auto first = train();
+  EXPECT_EQ(first, train());
+  CnmpModel other(curve_architecture(), 10);
+  EXPECT_NE(other.network().parameters().front().values()(0),
+            CnmpModel(curve_architecture(), 9).network().parameters().front().values()(0));
+}
+
+TEST(CnmpTrainer, RejectsTrajectoriesOfTheWrongShape) {
+  CnmpModel model(curve_architecture(), 1);
+  std::vector<CnmpTrajectory> bad{
+      {Eigen::MatrixXd::Zero(5, 1), Eigen::MatrixXd::Zero(5, 2), Eigen::VectorXd::Zero(1)}};
+  Rng rng(1);
+  EXPECT_THROW(train_cnmp(model, bad, {}, quick_training(), rng, "bad"), std::invalid_argument);
+}
+
+}  // namespace
+}  // namespace corrmp
