@@ -14,17 +14,17 @@ double curve_family_value(double context, double t) {
 Demonstration CurveFamily::make(double context, Rng& rng) const {
   const int steps = params_.time_steps;
   SegmentTrajectory segment{"full", Eigen::MatrixXd(steps, 1), Eigen::MatrixXd(steps, 1),
-                            Eigen::VectorXd::Constant(1, context)};
+                            Eigen::VectorXd::Constant(1, context), Observation{}};
   for (int i = 0; i < steps; ++i) {
     const double t = static_cast<double>(i) / (steps - 1);
     segment.x(i, 0) = t;
     segment.y(i, 0) = curve_family_value(context, t) +
                       (params_.noise > 0.0 ? rng.normal(0.0, params_.noise) : 0.0);
   }
-  return Demonstration{JsonObject().add("context", context).str(), {segment}};
+  return Demonstration{JsonObject().add("context", context).str(), {segment}, ""};
 }
 
-DemonstrationSplit CurveFamily::collect(Rng& rng) {
+DemonstrationSplit CurveFamily::collect(Environment*, Rng& rng) {
   DemonstrationSplit split;
   for (int i = 0; i < params_.train + params_.validation; ++i) {
     const double context = rng.uniform(params_.context_min, params_.context_max);

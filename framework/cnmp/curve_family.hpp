@@ -33,7 +33,7 @@ double curve_family_value(double context, double t);
 class CurveFamily : public DemonstrationSource {
  public:
   explicit CurveFamily(const CurveFamilyParams& params) : params_(params) {}
-  DemonstrationSplit collect(Rng& rng) override;
+  DemonstrationSplit collect(Environment* environment, Rng& rng) override;
   Demonstration make(double context, Rng& rng) const;
 
  private:

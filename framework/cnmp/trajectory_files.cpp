@@ -7,7 +7,7 @@
 
 namespace corrmp {
 
-DemonstrationSplit TrajectoryFiles::collect(Rng& rng) {
+DemonstrationSplit TrajectoryFiles::collect(Environment*, Rng& rng) {
   const auto raw = read_trajectory_files(params_.paths);
   const auto trajectories = select_columns(raw, {params_.time_column, params_.input_columns,
                                                  params_.output_columns, params_.context_columns});
@@ -22,7 +22,8 @@ DemonstrationSplit TrajectoryFiles::collect(Rng& rng) {
   for (size_t k = 0; k < order.size(); ++k) {
     const auto& t = trajectories[order[k]];
     Demonstration demo{JsonObject().add("source", raw[order[k]].source).str(),
-                       {SegmentTrajectory{params_.segment, t.x, t.y, t.context}}};
+                       {SegmentTrajectory{params_.segment, t.x, t.y, t.context, Observation{}}},
+                       ""};
     (k < validation ? split.validation : split.train).push_back(std::move(demo));
   }
   if (split.train.empty()) throw DataError("no demonstrations left for training");

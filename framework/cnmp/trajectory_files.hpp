@@ -37,7 +37,7 @@ struct TrajectoryFilesParams {
 class TrajectoryFiles : public DemonstrationSource {
  public:
   explicit TrajectoryFiles(const TrajectoryFilesParams& params) : params_(params) {}
-  DemonstrationSplit collect(Rng& rng) override;
+  DemonstrationSplit collect(Environment* environment, Rng& rng) override;
 
  private:
   TrajectoryFilesParams params_;

@@ -10,6 +10,7 @@
 #include <vector>
 
 #include "core/seeds.hpp"
+#include "envs/observation.hpp"
 
 namespace corrmp {
 
@@ -21,11 +22,13 @@ struct SegmentTrajectory {
   Eigen::MatrixXd x;
   Eigen::MatrixXd y;
   Eigen::VectorXd context;  // the segment's context vector; may be empty
+  Observation start;        // what was observed at the segment's start (critical point)
 };
 
 struct Demonstration {
   std::string scenario;  // JSON describing what was demonstrated
   std::vector<SegmentTrajectory> segments;
+  std::string correction;  // the demonstrated correction (push, pull, none) where known
 
   const SegmentTrajectory* find(const std::string& segment) const {
     for (const auto& s : segments) {
@@ -42,11 +45,20 @@ struct DemonstrationSplit {
 
 // Where demonstrations come from: an expert in a simulated environment, files
 // recorded by a researcher, or a synthetic family of curves.
+class Environment;
+
 class DemonstrationSource {
  public:
   virtual ~DemonstrationSource() = default;
   // Draws (or loads) the demonstrations; `rng` is this component's own stream.
-  virtual DemonstrationSplit collect(Rng& rng) = 0;
+  // `environment` is the experiment's environment, or null when it has none.
+  virtual DemonstrationSplit collect(Environment* environment, Rng& rng) = 0;
+  // Sources that emulate an expert in an environment need one.
+  virtual bool needs_environment() const { return false; }
+  // An expert demonstrates one scenario (the evaluation's reference for the
+  // expected correction and the trajectory errors); other sources cannot.
+  virtual Demonstration demonstrate(Environment& environment, const Scenario& scenario,
+                                    bool with_images);
 };
 
 }  // namespace corrmp

@@ -38,20 +38,26 @@ Experiment load_experiment(const std::string& config_path,
 
   experiment.context.seeds = SeedTree(experiment.config.seed);
   const ExperimentConfig& config = experiment.config;
+  if (config.environment) {
+    experiment.environment =
+        registries.environments.create(*config.environment, experiment.context);
+  }
   if (config.demonstrations) {
     experiment.demonstrations =
         registries.demonstrations.create(*config.demonstrations, experiment.context);
+    if (experiment.demonstrations->needs_environment() && !experiment.environment) {
+      const ConfigNode* type = config.demonstrations->node->find("type");
+      throw ConfigError(type->where(), "demonstrations.type",
+                        fmt::format("'{}' demonstrates in an environment: add an environment "
+                                    "section",
+                                    config.demonstrations->type));
+    }
+  }
+  if (config.context) {
+    experiment.context_extractor = registries.contexts.create(*config.context, experiment.context);
   }
   if (config.policy) {
     experiment.policy = registries.policies.create(*config.policy, experiment.context);
-  }
-  for (const auto* section : {&config.environment, &config.context}) {
-    if (*section) {
-      const ConfigNode* type = (*section)->node->find("type");
-      throw ConfigError(
-          type->where(), (*section)->path + ".type",
-          fmt::format("no {} component is available in this build yet", (*section)->path));
-    }
   }
 
   experiment.resolved_yaml = experiment.root->to_yaml_string();

@@ -20,7 +20,9 @@ struct Experiment {
   std::unique_ptr<ConfigNode> root;  // owns the nodes ComponentSpecs point into
   ExperimentConfig config;
   BuildContext context;
+  std::unique_ptr<Environment> environment;
   std::unique_ptr<DemonstrationSource> demonstrations;
+  std::unique_ptr<ContextExtractor> context_extractor;
   std::unique_ptr<Policy> policy;
 
   std::string resolved_yaml;  // every value in force, defaults included

@@ -10,6 +10,7 @@
 #include "core/interrupt.hpp"
 #include "core/json_writer.hpp"
 #include "core/logging.hpp"
+#include "experiment/environment_evaluation.hpp"
 #include "experiment/offline_evaluation.hpp"
 #include "experiment/provenance.hpp"
 #include "store/result_store.hpp"
@@ -55,26 +56,35 @@ void write_run_json(const fs::path& dir, const Experiment& experiment, int64_t r
 // The stages. Each appends what it measured; none invents a number.
 void run_stages(Experiment& experiment, const fs::path& dir, std::vector<TrialRecord>& trials,
                 std::vector<MetricRecord>& metrics) {
-  (void)trials;
   if (!experiment.demonstrations) {
     spdlog::warn("no demonstrations section: nothing to collect, train or evaluate");
     return;
   }
   Rng collect_rng = experiment.context.seeds.stream("demonstrations");
   spdlog::info("collecting demonstrations ({})", experiment.config.demonstrations->type);
-  const DemonstrationSplit split = experiment.demonstrations->collect(collect_rng);
+  DemonstrationSplit demos =
+      experiment.demonstrations->collect(experiment.environment.get(), collect_rng);
   check_interrupt();
-  spdlog::info("collected {} training and {} validation demonstrations", split.train.size(),
-               split.validation.size());
-  metrics.push_back({"demonstrations_train", static_cast<double>(split.train.size())});
-  metrics.push_back({"demonstrations_validation", static_cast<double>(split.validation.size())});
+  spdlog::info("collected {} training and {} validation demonstrations", demos.train.size(),
+               demos.validation.size());
+  metrics.push_back({"demonstrations_train", static_cast<double>(demos.train.size())});
+  metrics.push_back({"demonstrations_validation", static_cast<double>(demos.validation.size())});
   if (!experiment.policy) {
     spdlog::warn("no policy section: stopping after collection");
     return;
   }
 
+  if (experiment.context_extractor) {
+    Rng context_rng = experiment.context.seeds.stream("context");
+    spdlog::info("fitting the context extractor ({})", experiment.config.context->type);
+    experiment.context_extractor->fit(demos.train, context_rng);
+    assign_contexts(*experiment.context_extractor, demos.train);
+    assign_contexts(*experiment.context_extractor, demos.validation);
+    experiment.context_extractor->write_outputs(dir.string(), demos.validation);
+  }
+
   Rng train_rng = experiment.context.seeds.stream("policy.training");
-  for (const auto& summary : experiment.policy->fit(split.train, split.validation, train_rng)) {
+  for (const auto& summary : experiment.policy->fit(demos.train, demos.validation, train_rng)) {
     spdlog::info(
         "'{}': {} parameters, best validation error {:.4g} (max {:.4g}) at update {} "
         "of {}, {:.1f} s",
@@ -85,11 +95,23 @@ void run_stages(Experiment& experiment, const fs::path& dir, std::vector<TrialRe
   }
   experiment.policy->save((dir / "models").string());
 
-  const std::string csv_dir =
-      experiment.config.output.write_predictions ? (dir / "predictions").string() : "";
-  for (const auto& result : evaluate_offline(*experiment.policy, split.validation, csv_dir)) {
+  const bool write = experiment.config.output.write_predictions;
+  if (experiment.environment) {
+    Rng evaluation_rng(mix64(experiment.config.evaluation.seed ^ fnv1a64("evaluation")));
+    EnvironmentEvaluation evaluation = evaluate_in_environment(
+        *experiment.environment, *experiment.demonstrations, experiment.context_extractor.get(),
+        *experiment.policy, experiment.config.evaluation.trials, evaluation_rng,
+        experiment.config.experiment.name, write ? (dir / "trajectories.csv").string() : "");
+    trials = std::move(evaluation.trials);
+    metrics.insert(metrics.end(), evaluation.metrics.begin(), evaluation.metrics.end());
+    std::ofstream(dir / "tables.txt") << evaluation.tables;
+    fmt::print("{}", evaluation.tables);
+    return;
+  }
+  const std::string csv_dir = write ? (dir / "predictions").string() : "";
+  for (const auto& result : evaluate_offline(*experiment.policy, demos.validation, csv_dir)) {
     spdlog::info("'{}' on {} held-out demonstrations: error mean {:.4g}, max {:.4g}",
-                 result.segment, split.validation.size(), result.error.mean, result.error.max);
+                 result.segment, demos.validation.size(), result.error.mean, result.error.max);
     metrics.push_back({result.segment + "_error_mean", result.error.mean});
     metrics.push_back({result.segment + "_error_max", result.error.max});
   }

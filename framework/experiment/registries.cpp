@@ -4,13 +4,17 @@
 #include <fmt/format.h>
 
 #include "cnmp/register_builtin.hpp"
+#include "context/register_builtin.hpp"
+#include "envs/register_builtin.hpp"
 #include "policies/register_builtin.hpp"
 
 namespace corrmp {
 
 Registries builtin_registries() {
   Registries registries;
+  register_builtin_envs(registries.environments, registries.demonstrations);
   register_builtin_cnmp(registries.demonstrations);
+  register_builtin_contexts(registries.contexts);
   register_builtin_policies(registries.policies);
   return registries;
 }
@@ -34,7 +38,9 @@ std::string describe_registry(const std::string& section, const Registry<Base>& 
 }  // namespace
 
 std::string describe_registries(const Registries& registries) {
-  return describe_registry("demonstrations", registries.demonstrations) + "\n" +
+  return describe_registry("environment", registries.environments) + "\n" +
+         describe_registry("demonstrations", registries.demonstrations) + "\n" +
+         describe_registry("context", registries.contexts) + "\n" +
          describe_registry("policy", registries.policies);
 }
 

@@ -4,14 +4,18 @@
 
 #include <string>
 
+#include "context/context_extractor.hpp"
 #include "core/registry.hpp"
 #include "envs/demonstrations.hpp"
+#include "envs/environment.hpp"
 #include "policies/policy.hpp"
 
 namespace corrmp {
 
 struct Registries {
+  Registry<Environment> environments{"environment"};
   Registry<DemonstrationSource> demonstrations{"demonstration source"};
+  Registry<ContextExtractor> contexts{"context extractor"};
   Registry<Policy> policies{"policy"};
 };
 

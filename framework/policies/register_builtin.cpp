@@ -1,6 +1,7 @@
 // Registration of the policies module's components.
 #include "policies/register_builtin.hpp"
 
+#include "policies/monolithic_cnmp.hpp"
 #include "policies/segmented_cnmp.hpp"
 
 namespace corrmp {
@@ -10,6 +11,12 @@ void register_builtin_policies(Registry<Policy>& policies) {
       "segmented_cnmp", "one CNMP per segment, each conditioned on its start and context (paper)",
       [](const SegmentedCnmpParams& p, const BuildContext& context) {
         return new SegmentedCnmp(p, context.seeds.seed_for("policy.init"));
+      });
+  policies.add<MonolithicCnmpParams>(
+      "monolithic_cnmp",
+      "baseline: one CNMP for the whole trajectory, parameters matched to the segment networks",
+      [](const MonolithicCnmpParams& p, const BuildContext& context) {
+        return new MonolithicCnmp(p, context.seeds.seed_for("policy.init"));
       });
 }
 

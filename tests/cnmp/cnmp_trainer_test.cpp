@@ -26,7 +26,7 @@ struct Fixture {
     p.validation = 10;
     CurveFamily family(p);
     Rng rng(2);
-    const DemonstrationSplit split = family.collect(rng);
+    const DemonstrationSplit split = family.collect(nullptr, rng);
     train = curves(split.train);
     validation = curves(split.validation);
   }

@@ -54,7 +54,7 @@ TEST(RunExperiment, MalformedConfigsGiveOneLineExitTwoAndNoDatabaseWrites) {
        "bad.yaml:2:45: demonstrations.train: value 0 is out of range: must be >= 1"},
       {"experiment: {name: a}\ndemonstrations: {type: curve_famly}\n",
        "bad.yaml:2:24: demonstrations.type: unknown demonstration source 'curve_famly' (did you "
-       "mean 'curve_family'?); valid: curve_family"},
+       "mean 'curve_family'?); valid: corridor_expert, curve_family, trajectory_files"},
       {"experiment: {name: 'a/b'}\n", "bad.yaml:1:20: experiment.name: 'a/b' is not a valid name"},
       {"experiment: {name: a\n", "bad.yaml:2:1: YAML syntax error"},
   };
@@ -143,6 +143,46 @@ TEST(RunExperiment, ARunIsRecordedWithItsDirectoryAndIsDeterministic) {
   EXPECT_LE(std::stod(error_mean),
             std::stod(store.query_text("SELECT value FROM metrics WHERE run_id = 1 AND name = "
                                        "'full_error_max'")));
+}
+
+TEST(RunExperiment, ATinyCorridorRunRecordsTrialsAndThePapersMetrics) {
+  TempDir dir;
+  for (const std::string policy : {"corridor_pc", "corridor_mono"}) {
+    const Outcome outcome =
+        run(dir, std::string(PROJECT_DIR) + "/configs/" + policy +
+                     ".yaml demonstrations.train=8 demonstrations.validation=4 "
+                     "policy.training.updates=300 policy.training.validate_every=100 "
+                     "policy.network.width=16 evaluation.trials=3");
+    ASSERT_EQ(outcome.exit_code, 0) << outcome.err;
+    EXPECT_NE(outcome.out.find("Table I (" + policy + ")"), std::string::npos) << outcome.out;
+    EXPECT_NE(outcome.out.find("cor-MP"), std::string::npos) << outcome.out;
+  }
+  ResultStore store(dir.file("r.sqlite"));
+  for (int run_id : {1, 2}) {
+    const std::string where = " WHERE run_id = " + std::to_string(run_id);
+    EXPECT_EQ(store.query_int("SELECT COUNT(*) FROM trials" + where), 3);
+    EXPECT_EQ(store.query_int("SELECT COUNT(*) FROM trials" + where +
+                              " AND expected_action IN ('push', 'pull', 'none') AND chosen_action "
+                              "IN ('push', 'pull', 'none') AND scenario LIKE "
+                              "'%corridor_offset%' AND (success = 1 OR failure <> '')"),
+              3);
+    auto metric = [&](const std::string& name) {
+      const std::string text =
+          store.query_text("SELECT value FROM metrics" + where + " AND name = '" + name + "'");
+      EXPECT_FALSE(text.empty()) << name;
+      return text.empty() ? -1.0 : std::stod(text);
+    };
+    const double success = metric("task_success_rate");
+    EXPECT_GE(success, 0.0);
+    EXPECT_LE(success, 1.0);
+    EXPECT_DOUBLE_EQ(success * 3, static_cast<double>(
+                                      store.query_int("SELECT SUM(success) FROM trials" + where)));
+    EXPECT_GE(metric("decision_match_rate"), 0.0);
+    EXPECT_GT(metric("cor_mp_error_mean_cm"), 0.0);
+    EXPECT_LE(metric("cor_mp_error_mean_cm"), metric("cor_mp_error_max_cm"));
+    EXPECT_GT(metric("post_mp_error_mean_cm"), 0.0);
+    EXPECT_LE(metric("post_mp_error_mean_cm"), metric("post_mp_error_max_cm"));
+  }
 }
 
 }  // namespace

@@ -1,0 +1,65 @@
+// bench_autoencoder: training speed of the context autoencoder (Google Benchmark) with the
+// paper's architecture (Section III "Learning the Context": 64x64 RGB images, kernel 3, strides
+// [2, 1, 2, 1, 2], filters [32, 32, 64, 64, 64], latent 8, Adam 3e-4). One iteration is one
+// minibatch step: forward + backward on every image + gradient reduction + Adam step, with the
+// data-parallel trainer on 1 or 2 threads (context/autoencoder/data_parallel_trainer.hpp).
+// items_per_second is images per second; GFLOP/s counts the multiply-adds of the convolution
+// and Linear products (2 flops each): forward, weight gradient and input gradient.
+// Arguments: {batch size, threads}.
+#include <benchmark/benchmark.h>
+
+#include <numeric>
+#include <vector>
+
+#include "context/autoencoder/data_parallel_trainer.hpp"
+
+namespace corrmp {
+namespace {
+
+// Multiply-adds of one forward pass over one image.
+double forward_macs(const AutoencoderArchitecture& a) {
+  const std::vector<int> sizes = a.encoder_sizes();
+  double macs = 0.0;
+  int channels = a.channels;
+  for (size_t i = 0; i < sizes.size(); ++i) {
+    // conv i and its mirror have the same product sizes.
+    macs += 2.0 * sizes[i] * sizes[i] * a.filters[i] * channels * a.kernel_size * a.kernel_size;
+    channels = a.filters[i];
+  }
+  const double flat = static_cast<double>(a.filters.back()) * sizes.back() * sizes.back();
+  return macs + 2.0 * flat * a.latent_size;
+}
+
+void BM_train_step(benchmark::State& state) {
+  const auto batch = static_cast<nn::Index>(state.range(0));
+  const int threads = static_cast<int>(state.range(1));
+  const AutoencoderArchitecture a;  // the paper's
+  nn::Rng init(1);
+  ConvAutoencoder<float> model(a, init);
+  nn::Mat<float> data(batch, model.image_values());
+  for (nn::Index i = 0; i < data.size(); ++i) data.data()[i] = static_cast<float>(i % 251) / 250.0f;
+  std::vector<int> order(static_cast<size_t>(batch));
+  std::iota(order.begin(), order.end(), 0);
+  DataParallelTrainer trainer(model, threads, 3e-4);
+  trainer.step(data, order.data(), batch);  // warm-up: buffers sized
+  for (auto _ : state) benchmark::DoNotOptimize(trainer.step(data, order.data(), batch));
+  const double images = static_cast<double>(state.iterations()) * static_cast<double>(batch);
+  state.SetItemsProcessed(static_cast<int64_t>(images));
+  // Backward: weight gradient and input gradient, each as costly as the forward product.
+  state.counters["GFLOP/s"] =
+      benchmark::Counter(3.0 * 2.0 * forward_macs(a) * images / 1e9, benchmark::Counter::kIsRate);
+  state.counters["params"] = static_cast<double>(model.parameter_count());
+}
+
+BENCHMARK(BM_train_step)
+    ->Args({16, 1})
+    ->Args({16, 2})
+    ->Args({32, 1})
+    ->Args({32, 2})
+    ->Unit(benchmark::kMillisecond)
+    ->UseRealTime();
+
+}  // namespace
+}  // namespace corrmp
+
+BENCHMARK_MAIN();

@@ -1,0 +1,67 @@
+// Data-parallel Adam steps on model replicas (data_parallel_trainer.hpp).
+#include "context/autoencoder/data_parallel_trainer.hpp"
+
+#include <numeric>
+#include <stdexcept>
+
+#include "nn/denormals.hpp"
+
+namespace corrmp {
+
+DataParallelTrainer::DataParallelTrainer(ConvAutoencoder<float>& model, int threads,
+                                         double learning_rate)
+    : model_(model),
+      replicas_(static_cast<size_t>(threads > 1 ? threads - 1 : 0), model),
+      pool_(threads),
+      inputs_(static_cast<size_t>(threads)),
+      partial_(static_cast<size_t>(threads), 0.0),
+      adam_(model.parameters(), nn::AdamOptions{learning_rate}) {
+  params_.push_back(model.parameters());
+  for (auto& replica : replicas_) params_.push_back(replica.parameters());
+}
+
+void DataParallelTrainer::sync_weights(int r) {
+  if (r == 0) return;
+  for (size_t k = 0; k < params_[0].size(); ++k) params_[r][k].values() = params_[0][k].values();
+}
+
+double DataParallelTrainer::step(nn::ConstMatRef<float> data, const int* order, nn::Index batch) {
+  if (batch < 1) throw std::invalid_argument("DataParallelTrainer::step: empty minibatch");
+  const int threads = pool_.size();
+  pool_.run([&](int r) {
+    const nn::ScopedFlushDenormals flush_denormals;
+    sync_weights(r);
+    nn::zero_grad(params_[r]);
+    const nn::Index begin = r * batch / threads, end = (r + 1) * batch / threads;
+    partial_[r] = 0.0;
+    if (end == begin) return;
+    nn::MatMap<float> x = inputs_[r].resize(end - begin, data.cols());
+    for (nn::Index k = begin; k < end; ++k) x.row(k - begin) = data.row(order[k]);
+    const float share = static_cast<float>(end - begin) / static_cast<float>(batch);
+    partial_[r] = static_cast<double>(share) * worker(r).train_step(x, share);
+  });
+  for (int r = 1; r < threads; ++r) {
+    if ((r + 1) * batch / threads == r * batch / threads) continue;  // empty shard
+    for (size_t k = 0; k < params_[0].size(); ++k) params_[0][k].grads() += params_[r][k].grads();
+  }
+  adam_.step();
+  return std::accumulate(partial_.begin(), partial_.end(), 0.0);
+}
+
+double DataParallelTrainer::evaluate(nn::ConstMatRef<float> data) {
+  if (data.rows() == 0) throw std::invalid_argument("DataParallelTrainer::evaluate: no images");
+  const int threads = pool_.size();
+  const nn::Index rows = data.rows();
+  pool_.run([&](int r) {
+    const nn::ScopedFlushDenormals flush_denormals;
+    sync_weights(r);
+    const nn::Index begin = r * rows / threads, end = (r + 1) * rows / threads;
+    partial_[r] = 0.0;
+    if (end > begin)
+      partial_[r] = worker(r).reconstruction_mse(data.middleRows(begin, end - begin)) *
+                    static_cast<double>(end - begin);
+  });
+  return std::accumulate(partial_.begin(), partial_.end(), 0.0) / static_cast<double>(rows);
+}
+
+}  // namespace corrmp

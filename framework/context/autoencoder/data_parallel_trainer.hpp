@@ -1,0 +1,58 @@
+// Data-parallel Adam steps for the context autoencoder, so that the paper's training (Section III
+// "Learning the Context": Adam, learning rate 3e-4, 70 epochs of 360 images) uses every core.
+//
+// With T workers (worker_pool.hpp), worker 0 computes on the model itself and worker r > 0 on
+// its own replica (a copy of the model with its own weights, activations and gradients). A
+// minibatch of B images is cut into contiguous shards [r B / T, (r + 1) B / T); worker r copies
+// the model's weights into its replica, zeroes its gradients and runs
+//   g_r = (B_r / B) grad L_r            (L_r: mean squared error of its B_r images)
+// Then the replica gradients are added to the model's in the fixed order r = 1, ..., T - 1, so
+// g = sum_r g_r is the gradient of the minibatch's mean loss, and one Adam step updates the
+// model. Results are deterministic for given inputs and T. Different T compute the same
+// mathematical step but sum per-image gradient contributions in another order (and run Eigen
+// products on other row counts), so they agree only up to float rounding, which training
+// slowly amplifies. Once every worker has seen its largest shard, a step allocates nothing
+// beyond Eigen's GEMM workspace (nn/conv2d.hpp).
+#pragma once
+
+#include <cstdint>
+#include <vector>
+
+#include "context/autoencoder/conv_autoencoder.hpp"
+#include "context/autoencoder/worker_pool.hpp"
+#include "nn/adam.hpp"
+#include "nn/buffer.hpp"
+
+namespace corrmp {
+
+class DataParallelTrainer {
+ public:
+  /// Copies `model` into threads - 1 replicas; `model` must outlive the trainer and is the one
+  /// Adam updates.
+  DataParallelTrainer(ConvAutoencoder<float>& model, int threads, double learning_rate);
+
+  /// One Adam step on the rows order[0], ..., order[batch - 1] of `data` (one image per row);
+  /// returns the minibatch's mean squared error (before the step).
+  double step(nn::ConstMatRef<float> data, const int* order, nn::Index batch);
+
+  /// Mean squared reconstruction error of the model over all rows of `data`.
+  double evaluate(nn::ConstMatRef<float> data);
+
+  int threads() const { return pool_.size(); }
+  std::int64_t steps() const { return adam_.step_count(); }
+
+ private:
+  ConvAutoencoder<float>& worker(int r) { return r == 0 ? model_ : replicas_[r - 1]; }
+  // Copies the model's weights into replica r (nothing for r = 0); reads the model only.
+  void sync_weights(int r);
+
+  ConvAutoencoder<float>& model_;
+  std::vector<ConvAutoencoder<float>> replicas_;
+  WorkerPool pool_;
+  std::vector<std::vector<nn::Parameter<float>>> params_;  // [worker][parameter]
+  std::vector<nn::Buffer<float>> inputs_;                  // each worker's shard
+  std::vector<double> partial_;                            // each worker's share of the loss
+  nn::Adam<float> adam_;
+};
+
+}  // namespace corrmp

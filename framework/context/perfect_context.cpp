@@ -1,0 +1,17 @@
+// Perfect-state contexts.
+#include "context/perfect_context.hpp"
+
+namespace corrmp {
+
+Eigen::VectorXd PerfectContext::extract(const std::string& segment,
+                                        const Observation& observation) {
+  for (const auto& spec : params_.segments) {
+    if (spec.segment != segment) continue;
+    Eigen::VectorXd context(static_cast<Eigen::Index>(spec.state.size()));
+    for (size_t i = 0; i < spec.state.size(); ++i) context[i] = observation.value(spec.state[i]);
+    return context;
+  }
+  return Eigen::VectorXd();
+}
+
+}  // namespace corrmp

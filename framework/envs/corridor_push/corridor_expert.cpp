@@ -1,0 +1,156 @@
+// The emulated human demonstrator of the corridor task.
+#include "envs/corridor_push/corridor_expert.hpp"
+
+#include <fmt/format.h>
+#include <spdlog/spdlog.h>
+
+#include "core/interrupt.hpp"
+#include "core/progress.hpp"
+#include "envs/corridor_push/path_sampling.hpp"
+
+namespace corrmp {
+
+namespace {
+
+CorridorPush& as_corridor(Environment& environment) {
+  auto* corridor = dynamic_cast<CorridorPush*>(&environment);
+  if (corridor == nullptr) {
+    throw std::runtime_error("corridor_expert demonstrates only the corridor_push environment");
+  }
+  return *corridor;
+}
+
+SegmentTrajectory segment_of(const std::string& name, const Eigen::MatrixXd& path,
+                             Observation start) {
+  return SegmentTrajectory{name, normalised_time(static_cast<int>(path.rows())), path,
+                           Eigen::VectorXd(), std::move(start)};
+}
+
+}  // namespace
+
+std::string CorridorExpert::decide(const CorridorPush& env) {
+  const double misalignment = env.corridor_x() - env.object_position().x();
+  if (misalignment > env.params().tolerance) return "push";
+  if (misalignment < -env.params().tolerance) return "pull";
+  return "none";
+}
+
+std::vector<Eigen::Vector3d> CorridorExpert::pre_waypoints(const CorridorPush& env) {
+  const auto& p = env.params();
+  const Eigen::Vector3d start = env.effector_position().transpose();
+  const Eigen::Vector3d object = env.object_position();
+  const double contact_y = object.y() - env.object_half_size() - env.tool_half_width_y();
+  return {start,
+          {object.x(), start.y(), p.push_height},
+          {object.x(), contact_y + p.pre_push_distance, p.push_height}};
+}
+
+std::vector<Eigen::Vector3d> CorridorExpert::cor_waypoints(const CorridorPush& env,
+                                                           const std::string& decision) {
+  const auto& p = env.params();
+  const Eigen::Vector3d start = env.effector_position().transpose();
+  const Eigen::Vector3d o = env.object_position();
+  const double zp = p.push_height, zl = p.lift_height;
+  const double back_y = o.y() - env.object_half_size() - env.tool_half_width_y() - p.standoff;
+  if (decision == "none") return {start, {o.x(), back_y, zp}};
+  // push works from the object's -x side towards +x, pull from its +x side towards -x.
+  const double side = decision == "push" ? -1.0 : 1.0;
+  const double shift = env.corridor_x() - o.x();
+  const double contact = env.object_half_size() + env.tool_half_width_x();
+  const double approach_x = o.x() + side * (contact + p.standoff);
+  const double pushed_x = o.x() + side * contact + shift;
+  const double new_x = o.x() + shift;
+  return {start,
+          {start.x(), back_y, zp},
+          {start.x(), back_y, zl},
+          {approach_x, o.y(), zl},
+          {approach_x, o.y(), zp},
+          {pushed_x, o.y(), zp},
+          {pushed_x, o.y(), zl},
+          {new_x, back_y, zl},
+          {new_x, back_y, zp}};
+}
+
+std::vector<double> CorridorExpert::cor_slowness(const std::string& decision) {
+  if (decision == "none") return {};
+  constexpr double kPushing = 3.0;  // the pushing edge: approach -> pushed
+  return {1.0, 1.0, 1.0, 1.0, kPushing, 1.0, 1.0, 1.0};
+}
+
+std::vector<Eigen::Vector3d> CorridorExpert::post_waypoints(const CorridorPush& env) {
+  const auto& p = env.params();
+  const Eigen::Vector3d start = env.effector_position().transpose();
+  const Eigen::Vector3d o = env.object_position();
+  const double target_y = env.corridor_mid_y() + p.pass_margin;
+  const double contact_y = target_y - env.object_half_size() - env.tool_half_width_y();
+  return {start,
+          {o.x(), start.y(), p.push_height},
+          {o.x(), contact_y, p.push_height},
+          {o.x(), contact_y - p.standoff, p.push_height},
+          {o.x(), contact_y - p.standoff, p.lift_height}};
+}
+
+Demonstration CorridorExpert::demonstrate(Environment& environment, const Scenario& scenario,
+                                          bool with_images) {
+  CorridorPush& env = as_corridor(environment);
+  const auto& p = env.params();
+  env.reset(scenario);
+  Demonstration demo;
+  demo.scenario = scenario_json(scenario);
+  auto run = [&](const std::string& name, const std::vector<Eigen::Vector3d>& waypoints, int points,
+                 Observation start, const std::vector<double>& slowness = {}) {
+    const Eigen::MatrixXd path = sample_path(waypoints, points, slowness);
+    const std::string failure = env.execute(path);
+    if (!failure.empty())
+      throw std::runtime_error("the expert's " + name + "-MP failed: " + failure);
+    demo.segments.push_back(segment_of(name, path, std::move(start)));
+  };
+  Observation initial = env.observe(false);
+  run("pre", pre_waypoints(env), p.pre_points, initial);
+  Observation critical = env.observe(with_images);
+  demo.correction = decide(env);
+  run("cor", cor_waypoints(env, demo.correction), p.cor_points, critical,
+      cor_slowness(demo.correction));
+  run("post", post_waypoints(env), p.post_points, env.observe(with_images));
+
+  const int total = p.pre_points + p.cor_points + p.post_points;
+  Eigen::MatrixXd full(total, 3);
+  full << demo.segments[0].y, demo.segments[1].y, demo.segments[2].y;
+  demo.segments.push_back(segment_of("full", full, initial));
+  return demo;
+}
+
+DemonstrationSplit CorridorExpert::collect(Environment* environment, Rng& rng) {
+  if (environment == nullptr) throw std::runtime_error("corridor_expert needs an environment");
+  const int wanted = params_.train + params_.validation;
+  const int attempts = wanted * params_.max_attempts_factor;
+  DemonstrationSplit split;
+  Progress progress("demonstrations", wanted);
+  int failed = 0;
+  for (int attempt = 0; attempt < attempts &&
+                        static_cast<int>(split.train.size() + split.validation.size()) < wanted;
+       ++attempt) {
+    check_interrupt();
+    const Scenario scenario = environment->sample_scenario(rng);
+    try {
+      Demonstration demo = demonstrate(*environment, scenario, params_.images);
+      const Outcome outcome = environment->outcome();
+      if (!outcome.success) throw std::runtime_error(outcome.failure);
+      auto& into =
+          static_cast<int>(split.train.size()) < params_.train ? split.train : split.validation;
+      into.push_back(std::move(demo));
+      progress.advance();
+    } catch (const std::runtime_error& e) {
+      ++failed;
+      spdlog::warn("expert demonstration of {} dropped: {}", scenario_json(scenario), e.what());
+    }
+  }
+  progress.finish(fmt::format("{} dropped", failed));
+  if (static_cast<int>(split.train.size() + split.validation.size()) < wanted) {
+    throw std::runtime_error(
+        fmt::format("the expert succeeded on only {} of {} scenarios", wanted - failed, attempts));
+  }
+  return split;
+}
+
+}  // namespace corrmp

@@ -1,0 +1,60 @@
+// Demonstrator `corridor_expert`: emulates the human teacher of the paper's
+// Section IV-A. pre-MP pushes the object along +y in front of the corridor;
+// at the critical point the expert compares the corridor's x with the object's:
+// beyond the tolerance it pushes the object further (+x, from its near side) or
+// pulls it back (-x, working from its far side), else it does not correct;
+// post-MP pushes the object through the corridor. Each demonstration records
+// the gripper's x, y, z of every segment, the observations at the segment
+// starts (with head-camera images when asked) and the decision.
+#pragma once
+
+#include <string>
+#include <vector>
+
+#include "core/config/field_rule.hpp"
+#include "envs/corridor_push/corridor_push.hpp"
+#include "envs/demonstrations.hpp"
+
+namespace corrmp {
+
+struct CorridorExpertParams {
+  int train = 100;
+  int validation = 100;
+  bool images = true;
+  int max_attempts_factor = 2;
+
+  template <class Fields>
+  void describe(Fields& f) {
+    f("train", train, "training demonstrations (the paper: 100)", at_least(1));
+    f("validation", validation, "validation demonstrations (the paper: 100)", at_least(0));
+    f("images", images, "capture head-camera images after pre-MP and after cor-MP");
+    f("max_attempts_factor", max_attempts_factor,
+      "scenarios tried per wanted demonstration before giving up (failed ones are dropped)",
+      at_least(1));
+  }
+};
+
+class CorridorExpert : public DemonstrationSource {
+ public:
+  explicit CorridorExpert(const CorridorExpertParams& params) : params_(params) {}
+
+  DemonstrationSplit collect(Environment* environment, Rng& rng) override;
+  bool needs_environment() const override { return true; }
+  Demonstration demonstrate(Environment& environment, const Scenario& scenario,
+                            bool with_images) override;
+
+  // The correction the expert makes at the critical point.
+  static std::string decide(const CorridorPush& env);
+  // Waypoints of each segment from the environment's current state.
+  static std::vector<Eigen::Vector3d> pre_waypoints(const CorridorPush& env);
+  static std::vector<Eigen::Vector3d> cor_waypoints(const CorridorPush& env,
+                                                    const std::string& decision);
+  // Per-edge slowness of the cor-MP path: the expert pushes slowly.
+  static std::vector<double> cor_slowness(const std::string& decision);
+  static std::vector<Eigen::Vector3d> post_waypoints(const CorridorPush& env);
+
+ private:
+  CorridorExpertParams params_;
+};
+
+}  // namespace corrmp

@@ -1,0 +1,150 @@
+// The push-through-corridor environment.
+#include "envs/corridor_push/corridor_push.hpp"
+
+#include <fmt/format.h>
+
+#include <filesystem>
+
+namespace corrmp {
+
+namespace {
+
+// Scene files are looked up relative to the working directory, then to the
+// source tree, so configs work from any directory.
+std::string resolve_asset(const std::string& path) {
+  if (std::filesystem::exists(path) || std::filesystem::path(path).is_absolute()) return path;
+  const auto in_tree = std::filesystem::path(CORRMP_SOURCE_DIR) / path;
+  return std::filesystem::exists(in_tree) ? in_tree.string() : path;
+}
+
+}  // namespace
+
+CorridorPush::CorridorPush(const CorridorPushParams& params)
+    : params_(params), scene_(load_scene(resolve_asset(params.scene))) {
+  const double left = scene_.body("corridor_left").position[0];
+  const double right = scene_.body("corridor_right").position[0];
+  nominal_corridor_x_ = (left + right) / 2;
+  scene_.body("object");
+  scene_.body("table");
+  reset(Scenario{{"corridor_offset", 0.0}, {"object_dx", 0.0}, {"object_dy", 0.0}});
+}
+
+CorridorPush::~CorridorPush() = default;
+
+Scenario CorridorPush::sample_scenario(Rng& rng) const {
+  const double half = params_.corridor_range / 2;
+  Scenario scenario{{"corridor_offset", rng.uniform(-half, half)}};
+  const double noise = params_.object_noise;
+  scenario["object_dx"] = noise > 0 ? rng.uniform(-noise, noise) : 0.0;
+  scenario["object_dy"] = noise > 0 ? rng.uniform(-noise, noise) : 0.0;
+  return scenario;
+}
+
+void CorridorPush::reset(const Scenario& scenario) {
+  scenario_ = scenario;
+  gripper_.reset();
+  world_ = std::make_unique<BulletWorld>(params_.physics);
+  SceneDescription scene = scene_;
+  for (auto& body : scene.bodies) {
+    if (body.name == "corridor_left" || body.name == "corridor_right") {
+      body.position[0] += scenario.at("corridor_offset");
+    } else if (body.name == "object") {
+      body.position[0] += scenario.at("object_dx");
+      body.position[1] += scenario.at("object_dy");
+    }
+  }
+  world_->add_scene(scene);
+  object_ = world_->find("object");
+  wall_left_ = world_->find("corridor_left");
+  wall_right_ = world_->find("corridor_right");
+  gripper_ = std::make_unique<KinematicGripper>(*world_, params_.gripper, start_position());
+  touched_corridor_ = false;
+  failure_.clear();
+  for (int i = 0; i < params_.settle_ticks; ++i) world_->step();
+}
+
+Eigen::Vector3d CorridorPush::start_position() const {
+  const SceneBodySpec& object = scene_.body("object");
+  return {object.position[0],
+          object.position[1] - object_half_size() - tool_half_width_y() - 2.5 * params_.standoff,
+          params_.lift_height};
+}
+
+std::vector<SegmentInfo> CorridorPush::segments() const {
+  return {{"pre", params_.pre_points}, {"cor", params_.cor_points}, {"post", params_.post_points}};
+}
+
+Eigen::RowVectorXd CorridorPush::effector_position() const {
+  return gripper_->position().transpose();
+}
+
+std::string CorridorPush::execute(const Eigen::MatrixXd& trajectory) {
+  if (!failure_.empty()) return failure_;
+  const TrackingResult result = gripper_->follow(trajectory, [&] {
+    if (world_->touching(object_, wall_left_) || world_->touching(object_, wall_right_)) {
+      touched_corridor_ = true;
+    }
+    return std::string();
+  });
+  if (!result.ok) {
+    failure_ = result.failure;
+    return failure_;
+  }
+  for (int i = 0; i < params_.settle_ticks && failure_.empty(); ++i) {
+    world_->step();
+    failure_ = world_->blow_up();
+  }
+  return failure_;
+}
+
+Observation CorridorPush::observe(bool with_image) {
+  Observation observation;
+  const Eigen::Vector3d tool = gripper_->position();
+  const Eigen::Vector3d object = object_position();
+  observation.state = {{"gripper_x", tool.x()},         {"gripper_y", tool.y()},
+                       {"gripper_z", tool.z()},         {"object_x", object.x()},
+                       {"object_y", object.y()},        {"corridor_x", corridor_x()},
+                       {"corridor_y", corridor_mid_y()}};
+  if (with_image) {
+    if (!camera_) camera_ = std::make_unique<HeadCamera>(params_.camera);
+    RgbdImage image = camera_->capture(*world_);
+    observation.rgb = image.rgb;
+    observation.depth = image.depth;
+  }
+  return observation;
+}
+
+Outcome CorridorPush::outcome() const {
+  if (!failure_.empty()) return {false, failure_};
+  if (touched_corridor_) return {false, "the object touched the corridor"};
+  const Eigen::Vector3d object = object_position();
+  if (object.y() <= corridor_mid_y()) {
+    return {false, fmt::format("the object stopped {:.1f} cm before the corridor's midpoint",
+                               100 * (corridor_mid_y() - object.y()))};
+  }
+  return {true, ""};
+}
+
+std::string CorridorPush::classify_correction(const Eigen::MatrixXd& trajectory) const {
+  const double displacement = trajectory(trajectory.rows() - 1, 0) - trajectory(0, 0);
+  const double threshold = params_.tolerance / 2;
+  if (displacement > threshold) return "push";
+  if (displacement < -threshold) return "pull";
+  return "none";
+}
+
+double CorridorPush::corridor_x() const {
+  return (world_->position(wall_left_).x() + world_->position(wall_right_).x()) / 2;
+}
+
+double CorridorPush::corridor_mid_y() const { return world_->position(wall_left_).y(); }
+
+Eigen::Vector3d CorridorPush::object_position() const { return world_->position(object_); }
+
+double CorridorPush::object_half_size() const { return scene_.body("object").size[0] / 2; }
+
+double CorridorPush::tool_half_width_x() const { return params_.gripper.finger_size[0]; }
+
+double CorridorPush::tool_half_width_y() const { return params_.gripper.finger_size[1] / 2; }
+
+}  // namespace corrmp

@@ -1,0 +1,12 @@
+// Demonstration sources: the default for sources that are not experts.
+#include "envs/demonstrations.hpp"
+
+#include <stdexcept>
+
+namespace corrmp {
+
+Demonstration DemonstrationSource::demonstrate(Environment&, const Scenario&, bool) {
+  throw std::logic_error("this demonstration source cannot demonstrate a given scenario");
+}
+
+}  // namespace corrmp

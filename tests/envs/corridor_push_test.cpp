@@ -1,0 +1,88 @@
+// Tests of the corridor task: determinism, the expert's success rate and
+// decisions, the correction classifier, and path sampling.
+#include "envs/corridor_push/corridor_push.hpp"
+
+#include <gtest/gtest.h>
+
+#include "envs/corridor_push/corridor_expert.hpp"
+#include "envs/corridor_push/path_sampling.hpp"
+
+namespace corrmp {
+namespace {
+
+TEST(CorridorPush, TheSameScenarioReplaysIdentically) {
+  CorridorPush env{CorridorPushParams{}};
+  CorridorExpert expert{CorridorExpertParams{}};
+  const Scenario scenario{{"corridor_offset", 0.021}, {"object_dx", 0.0}, {"object_dy", 0.0}};
+  const Demonstration first = expert.demonstrate(env, scenario, false);
+  const Eigen::Vector3d object = env.object_position();
+  const Demonstration second = expert.demonstrate(env, scenario, false);
+  EXPECT_EQ(object, env.object_position());
+  for (size_t s = 0; s < first.segments.size(); ++s) {
+    EXPECT_EQ(first.segments[s].y, second.segments[s].y);
+  }
+  EXPECT_EQ(first.correction, "push");
+}
+
+TEST(CorridorPush, TheExpertSucceedsOnAtLeast98PercentOfScenariosWithTheRightDecisions) {
+  CorridorPush env{CorridorPushParams{}};
+  CorridorExpert expert{CorridorExpertParams{}};
+  Rng rng(123);
+  int successes = 0, trials = 60;
+  std::map<std::string, int> decisions;
+  for (int i = 0; i < trials; ++i) {
+    const Scenario scenario = env.sample_scenario(rng);
+    const double offset = scenario.at("corridor_offset");
+    ASSERT_LE(std::abs(offset), 0.03);
+    const Demonstration demo = expert.demonstrate(env, scenario, false);
+    const Outcome outcome = env.outcome();
+    successes += outcome.success;
+    EXPECT_TRUE(outcome.success) << scenario_json(scenario) << ": " << outcome.failure;
+    const std::string expected = offset > 0.006 ? "push" : offset < -0.006 ? "pull" : "none";
+    if (std::abs(std::abs(offset) - 0.006) > 0.001) {
+      EXPECT_EQ(demo.correction, expected);
+    }
+    ++decisions[demo.correction];
+    // The demonstrated cor-MP is classified as the decision it implements.
+    EXPECT_EQ(env.classify_correction(demo.find("cor")->y), demo.correction);
+    // After the correction the object was aligned with the corridor.
+    ASSERT_EQ(demo.segments.size(), 4u);
+    EXPECT_EQ(demo.find("full")->y.rows(), 140);
+  }
+  EXPECT_GE(successes, 0.98 * trials);
+  EXPECT_GT(decisions["push"], 10);
+  EXPECT_GT(decisions["pull"], 10);
+  EXPECT_GT(decisions["none"], 2);
+}
+
+TEST(CorridorPush, TouchingTheCorridorFailsTheTrial) {
+  CorridorPush env{CorridorPushParams{}};
+  const Scenario scenario{{"corridor_offset", 0.025}, {"object_dx", 0.0}, {"object_dy", 0.0}};
+  env.reset(scenario);
+  // Push straight through without correcting: the object hits the corridor wall.
+  const Eigen::Vector3d start = env.effector_position().transpose();
+  const Eigen::Vector3d object = env.object_position();
+  const Eigen::MatrixXd straight =
+      sample_path({start, {object.x(), start.y(), 0.03}, {object.x(), 0.12, 0.03}}, 60);
+  EXPECT_EQ(env.execute(straight), "");
+  const Outcome outcome = env.outcome();
+  EXPECT_FALSE(outcome.success);
+  EXPECT_EQ(outcome.failure, "the object touched the corridor");
+}
+
+TEST(PathSampling, KeepsEveryWaypointAndSpacesPointsEvenly) {
+  const std::vector<Eigen::Vector3d> waypoints{{0, 0, 0}, {0.1, 0, 0}, {0.1, 0.1, 0}};
+  const Eigen::MatrixXd path = sample_path(waypoints, 21);
+  ASSERT_EQ(path.rows(), 21);
+  EXPECT_EQ(path.row(0), Eigen::RowVector3d(0, 0, 0));
+  EXPECT_EQ(path.row(10), Eigen::RowVector3d(0.1, 0, 0));
+  EXPECT_EQ(path.row(20), Eigen::RowVector3d(0.1, 0.1, 0));
+  for (int i = 1; i < 21; ++i) EXPECT_NEAR((path.row(i) - path.row(i - 1)).norm(), 0.01, 1e-12);
+  const Eigen::MatrixXd still = sample_path({{1, 2, 3}, {1, 2, 3}}, 5);
+  EXPECT_EQ(still.row(4), Eigen::RowVector3d(1, 2, 3));
+  EXPECT_THROW(sample_path(waypoints, 2), std::invalid_argument);
+  EXPECT_EQ(normalised_time(3)(1, 0), 0.5);
+}
+
+}  // namespace
+}  // namespace corrmp
