@@ -10,6 +10,7 @@
 #include "core/interrupt.hpp"
 #include "core/json_writer.hpp"
 #include "core/logging.hpp"
+#include "experiment/demonstration_cache.hpp"
 #include "experiment/environment_evaluation.hpp"
 #include "experiment/offline_evaluation.hpp"
 #include "experiment/provenance.hpp"
@@ -53,17 +54,37 @@ void write_run_json(const fs::path& dir, const Experiment& experiment, int64_t r
   write_text(dir / "run.json", run.str(2) + "\n");
 }
 
+// Demonstrations from the cache when the same environment, source and seed
+// made them before; else collected (and cached when an expert made them).
+DemonstrationSplit collect_or_reuse(Experiment& experiment, const fs::path& cache_dir, Rng& rng) {
+  const auto& config = experiment.config;
+  const bool cacheable = experiment.environment != nullptr;
+  fs::path cache;
+  if (cacheable) {
+    const std::string key =
+        fmt::format("v1 seed {}\n{}{}", config.seed, config.environment->node->to_yaml_string(),
+                    config.demonstrations->node->to_yaml_string());
+    cache = cache_dir / fmt::format("demonstrations-{:016x}.bin", fnv1a64(key));
+    if (auto cached = load_demonstrations(cache.string())) {
+      spdlog::info("reusing cached demonstrations {}", cache.string());
+      return std::move(*cached);
+    }
+  }
+  DemonstrationSplit demos = experiment.demonstrations->collect(experiment.environment.get(), rng);
+  if (cacheable) save_demonstrations(cache.string(), demos);
+  return demos;
+}
+
 // The stages. Each appends what it measured; none invents a number.
-void run_stages(Experiment& experiment, const fs::path& dir, std::vector<TrialRecord>& trials,
-                std::vector<MetricRecord>& metrics) {
+void run_stages(Experiment& experiment, const fs::path& dir, const fs::path& cache_dir,
+                std::vector<TrialRecord>& trials, std::vector<MetricRecord>& metrics) {
   if (!experiment.demonstrations) {
     spdlog::warn("no demonstrations section: nothing to collect, train or evaluate");
     return;
   }
   Rng collect_rng = experiment.context.seeds.stream("demonstrations");
   spdlog::info("collecting demonstrations ({})", experiment.config.demonstrations->type);
-  DemonstrationSplit demos =
-      experiment.demonstrations->collect(experiment.environment.get(), collect_rng);
+  DemonstrationSplit demos = collect_or_reuse(experiment, cache_dir, collect_rng);
   check_interrupt();
   spdlog::info("collected {} training and {} validation demonstrations", demos.train.size(),
                demos.validation.size());
@@ -146,7 +167,7 @@ RunResult run_pipeline(Experiment& experiment, const RunOptions& options) {
     write_run_json(dir, experiment, result.run_id, git, started_at, result, "");
     spdlog::info("run {} of '{}' in {}", result.run_id, experiment.config.experiment.name,
                  dir.string());
-    run_stages(experiment, dir, trials, metrics);
+    run_stages(experiment, dir, fs::path(options.out_dir) / "cache", trials, metrics);
     store.complete_run(result.run_id, trials, metrics);
     result.status = "completed";
   } catch (const Interrupted& e) {

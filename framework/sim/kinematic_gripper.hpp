@@ -16,7 +16,7 @@ struct GripperParams {
   std::vector<double> finger_size{0.015, 0.03, 0.05};  // x, y, z (m)
   std::vector<double> palm_size{0.06, 0.03, 0.015};
   double opening = 0.04;    // gap between open fingers (m); closed fingers touch
-  double max_speed = 0.15;  // m/s
+  double max_speed = 0.05;  // m/s: slow enough that a pushed object stops within 1 mm
   std::vector<double> colour{0.25, 0.25, 0.3};
 
   template <class Fields>

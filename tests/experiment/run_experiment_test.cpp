@@ -147,7 +147,9 @@ TEST(RunExperiment, ARunIsRecordedWithItsDirectoryAndIsDeterministic) {
 
 TEST(RunExperiment, ATinyCorridorRunRecordsTrialsAndThePapersMetrics) {
   TempDir dir;
-  for (const std::string policy : {"corridor_pc", "corridor_mono"}) {
+  // corridor_pc twice: the second run reuses the cached demonstrations and must
+  // reproduce the first exactly.
+  for (const std::string policy : {"corridor_pc", "corridor_mono", "corridor_pc"}) {
     const Outcome outcome =
         run(dir, std::string(PROJECT_DIR) + "/configs/" + policy +
                      ".yaml demonstrations.train=8 demonstrations.validation=4 "
@@ -183,6 +185,17 @@ TEST(RunExperiment, ATinyCorridorRunRecordsTrialsAndThePapersMetrics) {
     EXPECT_GT(metric("post_mp_error_mean_cm"), 0.0);
     EXPECT_LE(metric("post_mp_error_mean_cm"), metric("post_mp_error_max_cm"));
   }
+  EXPECT_EQ(store.query_int("SELECT COUNT(*) FROM (SELECT trial, scenario, expected_action, "
+                            "chosen_action, success, failure FROM trials WHERE run_id = 1 EXCEPT "
+                            "SELECT trial, scenario, expected_action, chosen_action, success, "
+                            "failure FROM trials WHERE run_id = 3)"),
+            0);
+  EXPECT_EQ(store.query_int("SELECT COUNT(*) FROM (SELECT name, value FROM metrics WHERE run_id = "
+                            "1 EXCEPT SELECT name, value FROM metrics WHERE run_id = 3)"),
+            0);
+  EXPECT_NE(read_file(store.query_text("SELECT out_dir FROM runs WHERE id = 3") + "/log.txt")
+                .find("reusing cached demonstrations"),
+            std::string::npos);
 }
 
 }  // namespace

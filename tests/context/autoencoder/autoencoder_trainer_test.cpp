@@ -96,6 +96,22 @@ TEST(AutoencoderTrainer, LearnsTheSquaresAndItsLatentEncodesThePosition) {
   EXPECT_GT(r2, 0.9);
 }
 
+TEST(AutoencoderTrainer, PaperArchitectureLossDecreasesOn64x64Images) {
+  AutoencoderParams p;  // the paper's architecture
+  p.learning_rate = 1e-3;
+  p.batch_size = 4;
+  p.epochs = 8;
+  Rng data_rng(8);
+  const testing::SquareSet train = testing::square_set(32, 64, 16, data_rng);
+  nn::Rng init(1);
+  ConvAutoencoder<float> model(p.architecture(), init);
+  Rng rng(2);
+  const AutoencoderReport report = train_autoencoder(model, train.images, {}, p, rng);
+  ASSERT_EQ(report.epoch_train_loss.size(), 8u);
+  EXPECT_LT(report.epoch_train_loss.back(), 0.8 * report.epoch_train_loss.front());
+  EXPECT_LT(report.train_mse, report.epoch_train_loss.front());
+}
+
 TEST(AutoencoderTrainer, SameSeedAndThreadsGiveIdenticalWeights) {
   AutoencoderParams p = small_params();
   p.epochs = 4;
@@ -169,7 +185,7 @@ TEST(AutoencoderTrainer, SplitIsThePapers360And40) {
   EXPECT_THROW(split_train_test(10, 1.5, rng), std::invalid_argument);
 }
 
-TEST(WorkerPool, RunsEveryIndexOnceAndRethrows) {
+TEST(AutoencoderWorkerPool, RunsEveryIndexOnceAndRethrows) {
   WorkerPool pool(3);
   ASSERT_EQ(pool.size(), 3);
   for (int round = 0; round < 50; ++round) {

@@ -1,0 +1,27 @@
+// On-disk cache of collected demonstrations, keyed by a hash of what determines
+// them (the environment and demonstrations sections and the root seed), so
+// reruns and sweeps over policy or context parameters reuse them. Lossless:
+// doubles and depth are stored bit for bit and colour images as PNG, so a cached run gives the
+// same results as a fresh one.
+//
+// Format (little-endian): "CMPD", uint32 version, uint64 demonstration count for
+// train then validation, then per demonstration: string scenario, string
+// correction, uint32 segments, per segment: string name, matrix x, matrix y,
+// vector context, uint32 state entries (string, double), PNG rgb, depth as
+// uint32 rows, cols and raw float32; strings and blobs are uint64 length + bytes. Then an FNV-1a
+// checksum of everything before.
+#pragma once
+
+#include <optional>
+#include <string>
+
+#include "envs/demonstrations.hpp"
+
+namespace corrmp {
+
+void save_demonstrations(const std::string& path, const DemonstrationSplit& demos);
+// The cached demonstrations, or nothing when the file is missing; throws
+// std::runtime_error naming the file when it is corrupt.
+std::optional<DemonstrationSplit> load_demonstrations(const std::string& path);
+
+}  // namespace corrmp
