@@ -5,6 +5,7 @@
 #include <spdlog/spdlog.h>
 
 #include <chrono>
+#include <cmath>
 #include <numeric>
 #include <stdexcept>
 
@@ -115,7 +116,14 @@ TrainingReport train_cnmp(CnmpModel& model, const std::vector<CnmpTrajectory>& t
   const auto start = std::chrono::steady_clock::now();
   Progress progress(label, params.updates);
   std::string status;
+  const bool schedule = params.final_learning_rate > 0.0;
   for (int64_t update = 1; update <= params.updates; ++update) {
+    if (schedule && (update - 1) % 100 == 0) {
+      const double progress_fraction = static_cast<double>(update - 1) / params.updates;
+      adam.set_learning_rate(params.final_learning_rate +
+                             (params.learning_rate - params.final_learning_rate) *
+                                 (1.0 + std::cos(M_PI * progress_fraction)) / 2.0);
+    }
     sampler.draw(rng);
     adam.zero_grad();
     const float loss = sampler.step(model.network());

@@ -5,6 +5,9 @@
 // time steps; Adam on the Gaussian negative log-likelihood. Every
 // validate_every updates the held-out demonstrations are predicted from their
 // first point and context, and the best weights (lowest mean error) are kept.
+// With final_learning_rate > 0 the learning rate follows a cosine schedule
+//   lr(u) = lr_end + (lr_start - lr_end) (1 + cos(pi u / U)) / 2,
+// which the scaled-down default protocol uses to converge in fewer updates.
 #pragma once
 
 #include <Eigen/Core>
@@ -23,6 +26,7 @@ struct CnmpTrainingParams {
   int max_observations = 5;
   int max_targets = 1;
   double learning_rate = 1e-4;
+  double final_learning_rate = 0.0;  // 0: constant learning rate (the paper)
   int validate_every = 1000;
 
   template <class Fields>
@@ -33,6 +37,9 @@ struct CnmpTrainingParams {
       at_least(1));
     f("max_targets", max_targets, "targets per update: uniform in 1..this", at_least(1));
     f("learning_rate", learning_rate, "Adam learning rate (the paper: 1e-4)", positive());
+    f("final_learning_rate", final_learning_rate,
+      "when > 0, the learning rate follows a cosine from learning_rate down to this",
+      at_least(0.0));
     f("validate_every", validate_every, "updates between validations", at_least(1));
   }
 };

@@ -14,17 +14,29 @@
 
 namespace corrmp {
 
+// Where an extractor may cache what it learns: a directory and a key naming
+// the data it learns from (the demonstrations' cache key).
+struct ExtractorCache {
+  std::string directory;
+  std::string data_key;
+};
+
 class ContextExtractor {
  public:
   virtual ~ContextExtractor() = default;
-  // Learns from the training demonstrations (the autoencoder trains here).
-  virtual void fit(const std::vector<Demonstration>& train, Rng& rng) = 0;
+  // Learns from demonstrations (the autoencoder trains here; it uses only their
+  // images, no labels, so the pipeline passes the training and validation
+  // demonstrations, never evaluation trials).
+  virtual void fit(const std::vector<Demonstration>& demos, const ExtractorCache& cache,
+                   Rng& rng) = 0;
   // The context of `segment`; empty for segments that have none.
   virtual Eigen::VectorXd extract(const std::string& segment, const Observation& observation) = 0;
   // Whether observations must include camera images.
   virtual bool needs_images() const = 0;
   // Writes what a researcher looks at (figures, models) into the run directory.
   virtual void write_outputs(const std::string&, const std::vector<Demonstration>&) {}
+  // Measurements of the fit (name, value), recorded as run metrics.
+  virtual std::vector<std::pair<std::string, double>> metrics() const { return {}; }
 };
 
 // Sets every segment's context of every demonstration from its start observation.

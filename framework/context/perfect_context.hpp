@@ -35,7 +35,7 @@ struct PerfectContextParams {
 class PerfectContext : public ContextExtractor {
  public:
   explicit PerfectContext(const PerfectContextParams& params) : params_(params) {}
-  void fit(const std::vector<Demonstration>&, Rng&) override {}
+  void fit(const std::vector<Demonstration>&, const ExtractorCache&, Rng&) override {}
   Eigen::VectorXd extract(const std::string& segment, const Observation& observation) override;
   bool needs_images() const override { return false; }
 

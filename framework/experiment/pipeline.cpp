@@ -54,24 +54,30 @@ void write_run_json(const fs::path& dir, const Experiment& experiment, int64_t r
   write_text(dir / "run.json", run.str(2) + "\n");
 }
 
+// What determines an environment's demonstrations: the environment and
+// demonstrations sections and the root seed ("" without an environment).
+std::string demonstrations_key(const Experiment& experiment) {
+  const auto& config = experiment.config;
+  if (!experiment.environment) return "";
+  const std::string text =
+      fmt::format("v2 seed {}\n{}{}", config.seed, config.environment->node->to_yaml_string(),
+                  config.demonstrations->node->to_yaml_string());
+  return fmt::format("{:016x}", fnv1a64(text));
+}
+
 // Demonstrations from the cache when the same environment, source and seed
 // made them before; else collected (and cached when an expert made them).
-DemonstrationSplit collect_or_reuse(Experiment& experiment, const fs::path& cache_dir, Rng& rng) {
-  const auto& config = experiment.config;
-  const bool cacheable = experiment.environment != nullptr;
-  fs::path cache;
-  if (cacheable) {
-    const std::string key =
-        fmt::format("v1 seed {}\n{}{}", config.seed, config.environment->node->to_yaml_string(),
-                    config.demonstrations->node->to_yaml_string());
-    cache = cache_dir / fmt::format("demonstrations-{:016x}.bin", fnv1a64(key));
+DemonstrationSplit collect_or_reuse(Experiment& experiment, const fs::path& cache_dir,
+                                    const std::string& key, Rng& rng) {
+  const fs::path cache = cache_dir / fmt::format("demonstrations-{}.bin", key);
+  if (!key.empty()) {
     if (auto cached = load_demonstrations(cache.string())) {
       spdlog::info("reusing cached demonstrations {}", cache.string());
       return std::move(*cached);
     }
   }
   DemonstrationSplit demos = experiment.demonstrations->collect(experiment.environment.get(), rng);
-  if (cacheable) save_demonstrations(cache.string(), demos);
+  if (!key.empty()) save_demonstrations(cache.string(), demos);
   return demos;
 }
 
@@ -84,7 +90,8 @@ void run_stages(Experiment& experiment, const fs::path& dir, const fs::path& cac
   }
   Rng collect_rng = experiment.context.seeds.stream("demonstrations");
   spdlog::info("collecting demonstrations ({})", experiment.config.demonstrations->type);
-  DemonstrationSplit demos = collect_or_reuse(experiment, cache_dir, collect_rng);
+  const std::string key = demonstrations_key(experiment);
+  DemonstrationSplit demos = collect_or_reuse(experiment, cache_dir, key, collect_rng);
   check_interrupt();
   spdlog::info("collected {} training and {} validation demonstrations", demos.train.size(),
                demos.validation.size());
@@ -98,7 +105,13 @@ void run_stages(Experiment& experiment, const fs::path& dir, const fs::path& cac
   if (experiment.context_extractor) {
     Rng context_rng = experiment.context.seeds.stream("context");
     spdlog::info("fitting the context extractor ({})", experiment.config.context->type);
-    experiment.context_extractor->fit(demos.train, context_rng);
+    std::vector<Demonstration> all = demos.train;
+    all.insert(all.end(), demos.validation.begin(), demos.validation.end());
+    experiment.context_extractor->fit(all, {key.empty() ? "" : cache_dir.string(), key},
+                                      context_rng);
+    for (const auto& [name, value] : experiment.context_extractor->metrics()) {
+      metrics.push_back({name, value});
+    }
     assign_contexts(*experiment.context_extractor, demos.train);
     assign_contexts(*experiment.context_extractor, demos.validation);
     experiment.context_extractor->write_outputs(dir.string(), demos.validation);

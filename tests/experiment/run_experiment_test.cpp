@@ -198,5 +198,38 @@ TEST(RunExperiment, ATinyCorridorRunRecordsTrialsAndThePapersMetrics) {
             std::string::npos);
 }
 
+TEST(RunExperiment, ATinyAutoencoderRunWritesItsFiguresModelAndTestError) {
+  TempDir dir;
+  const std::string args =
+      std::string(PROJECT_DIR) +
+      "/configs/corridor_ae.yaml demonstrations.train=10 demonstrations.validation=5 "
+      "policy.training.updates=200 policy.training.validate_every=100 policy.network.width=16 "
+      "evaluation.trials=2 context.network.image_size=16 context.network.epochs=2 "
+      "context.network.filters=[4,4,8,8,8] context.network.latent_size=3";
+  const Outcome first = run(dir, args);
+  ASSERT_EQ(first.exit_code, 0) << first.err;
+  ResultStore store(dir.file("r.sqlite"));
+  const std::string run_dir = store.query_text("SELECT out_dir FROM runs WHERE id = 1");
+  for (const char* file : {"autoencoder.cmpm", "autoencoder_reconstructions.png",
+                           "autoencoder_latents.png", "tables.txt"}) {
+    EXPECT_TRUE(std::filesystem::exists(run_dir + "/" + file)) << file;
+  }
+  const std::string mse = store.query_text(
+      "SELECT value FROM metrics WHERE run_id = 1 AND name = 'autoencoder_test_mse'");
+  ASSERT_FALSE(mse.empty());
+  EXPECT_GT(std::stod(mse), 0.0);
+  EXPECT_LT(std::stod(mse), 0.5);
+  EXPECT_EQ(store.query_int("SELECT COUNT(*) FROM trials WHERE run_id = 1"), 2);
+  // A second run reuses the cached autoencoder and reproduces the first.
+  const Outcome second = run(dir, args);
+  ASSERT_EQ(second.exit_code, 0) << second.err;
+  EXPECT_NE(read_file(store.query_text("SELECT out_dir FROM runs WHERE id = 2") + "/log.txt")
+                .find("reusing the trained autoencoder"),
+            std::string::npos);
+  EXPECT_EQ(store.query_int("SELECT COUNT(*) FROM (SELECT name, value FROM metrics WHERE run_id = "
+                            "1 EXCEPT SELECT name, value FROM metrics WHERE run_id = 2)"),
+            0);
+}
+
 }  // namespace
 }  // namespace corrmp

@@ -52,29 +52,29 @@ std::vector<Eigen::Vector3d> CorridorExpert::cor_waypoints(const CorridorPush& e
   const Eigen::Vector3d o = env.object_position();
   const double zp = p.push_height, zl = p.lift_height;
   const double back_y = o.y() - env.object_half_size() - env.tool_half_width_y() - p.standoff;
-  if (decision == "none") return {start, {o.x(), back_y, zp}};
-  // push works from the object's -x side towards +x, pull from its +x side towards -x.
-  const double side = decision == "push" ? -1.0 : 1.0;
-  const double shift = env.corridor_x() - o.x();
+  // The expert goes round the object at table height to its -x side (push) or
+  // +x side (pull), pushes it by the shift (0 when no correction is needed,
+  // from the side the misalignment points to), lifts and comes back behind it.
+  // Every decision has the same shape, so a CNMP blending two neighbouring
+  // demonstrations still produces a harmless motion.
+  const double shift = decision == "none" ? 0.0 : env.corridor_x() - o.x();
+  const double side = env.corridor_x() - o.x() >= 0.0 ? -1.0 : 1.0;
   const double contact = env.object_half_size() + env.tool_half_width_x();
   const double approach_x = o.x() + side * (contact + p.standoff);
   const double pushed_x = o.x() + side * contact + shift;
-  const double new_x = o.x() + shift;
   return {start,
           {start.x(), back_y, zp},
-          {start.x(), back_y, zl},
-          {approach_x, o.y(), zl},
+          {approach_x, back_y, zp},
           {approach_x, o.y(), zp},
           {pushed_x, o.y(), zp},
           {pushed_x, o.y(), zl},
-          {new_x, back_y, zl},
-          {new_x, back_y, zp}};
+          {o.x() + shift, back_y, zl},
+          {o.x() + shift, back_y, zp}};
 }
 
-std::vector<double> CorridorExpert::cor_slowness(const std::string& decision) {
-  if (decision == "none") return {};
+std::vector<double> CorridorExpert::cor_slowness() {
   constexpr double kPushing = 3.0;  // the pushing edge: approach -> pushed
-  return {1.0, 1.0, 1.0, 1.0, kPushing, 1.0, 1.0, 1.0};
+  return {1.0, 1.0, 1.0, kPushing, 1.0, 1.0, 1.0};
 }
 
 std::vector<Eigen::Vector3d> CorridorExpert::post_waypoints(const CorridorPush& env) {
@@ -109,8 +109,7 @@ Demonstration CorridorExpert::demonstrate(Environment& environment, const Scenar
   run("pre", pre_waypoints(env), p.pre_points, initial);
   Observation critical = env.observe(with_images);
   demo.correction = decide(env);
-  run("cor", cor_waypoints(env, demo.correction), p.cor_points, critical,
-      cor_slowness(demo.correction));
+  run("cor", cor_waypoints(env, demo.correction), p.cor_points, critical, cor_slowness());
   run("post", post_waypoints(env), p.post_points, env.observe(with_images));
 
   const int total = p.pre_points + p.cor_points + p.post_points;

@@ -2,7 +2,8 @@
 // Section IV-A. pre-MP pushes the object along +y in front of the corridor;
 // at the critical point the expert compares the corridor's x with the object's:
 // beyond the tolerance it pushes the object further (+x, from its near side) or
-// pulls it back (-x, working from its far side), else it does not correct;
+// pulls it back (-x, working from its far side), else it does not correct (it
+// still goes round to the side, but moves the object by nothing);
 // post-MP pushes the object through the corridor. Each demonstration records
 // the gripper's x, y, z of every segment, the observations at the segment
 // starts (with head-camera images when asked) and the decision.
@@ -50,7 +51,7 @@ class CorridorExpert : public DemonstrationSource {
   static std::vector<Eigen::Vector3d> cor_waypoints(const CorridorPush& env,
                                                     const std::string& decision);
   // Per-edge slowness of the cor-MP path: the expert pushes slowly.
-  static std::vector<double> cor_slowness(const std::string& decision);
+  static std::vector<double> cor_slowness();
   static std::vector<Eigen::Vector3d> post_waypoints(const CorridorPush& env);
 
  private:
