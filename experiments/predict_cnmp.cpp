@@ -7,6 +7,8 @@
 
 #include <iostream>
 
+#include "command_line.hpp"
+
 #include "cnmp/cnmp_model.hpp"
 
 namespace {
@@ -52,14 +54,7 @@ int main(int argc, char** argv) {
       ->check(CLI::Range(2, 1000000));
   app.add_option("--out", out, "CSV file (default: standard output)");
   app.footer(kExamples);
-  try {
-    app.parse(argc, argv);
-  } catch (const CLI::CallForHelp& e) {
-    return app.exit(e);
-  } catch (const CLI::ParseError& e) {
-    std::cerr << "predict_cnmp: " << e.what() << " (see --help)\n";
-    return 2;
-  }
+  if (const auto exit_code = corrmp::parse_command_line(app, argc, argv)) return *exit_code;
   try {
     auto model = corrmp::CnmpModel::load(model_path);
     const auto& a = model->architecture();

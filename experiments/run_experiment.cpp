@@ -9,6 +9,8 @@
 
 #include <iostream>
 
+#include "command_line.hpp"
+
 #include "core/config/config_error.hpp"
 #include "core/interrupt.hpp"
 #include "core/logging.hpp"
@@ -44,14 +46,7 @@ int main(int argc, char** argv) {
   app.add_option("--out", options.out_dir, "directory for run outputs")->capture_default_str();
   app.add_flag("-q,--quiet", quiet, "only warnings and errors on stderr");
   app.footer(kExamples);
-  try {
-    app.parse(argc, argv);
-  } catch (const CLI::CallForHelp& e) {
-    return app.exit(e);
-  } catch (const CLI::ParseError& e) {
-    std::cerr << "run_experiment: " << e.what() << " (see --help)\n";
-    return 2;
-  }
+  if (const auto exit_code = corrmp::parse_command_line(app, argc, argv)) return *exit_code;
 
   corrmp::setup_logging(quiet);
   try {

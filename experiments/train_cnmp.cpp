@@ -6,6 +6,8 @@
 
 #include <iostream>
 
+#include "command_line.hpp"
+
 #include "cnmp/cnmp_trainer.hpp"
 #include "cnmp/trajectory_dataset.hpp"
 #include "core/interrupt.hpp"
@@ -77,14 +79,7 @@ int main(int argc, char** argv) {
   app.add_option("--out", out, "model file to write")->required();
   app.add_flag("-q,--quiet", quiet, "only warnings and errors");
   app.footer(kExamples);
-  try {
-    app.parse(argc, argv);
-  } catch (const CLI::CallForHelp& e) {
-    return app.exit(e);
-  } catch (const CLI::ParseError& e) {
-    std::cerr << "train_cnmp: " << e.what() << " (see --help)\n";
-    return 2;
-  }
+  if (const auto exit_code = corrmp::parse_command_line(app, argc, argv)) return *exit_code;
   corrmp::setup_logging(quiet);
   corrmp::install_interrupt_handlers();
   try {

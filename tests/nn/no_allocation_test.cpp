@@ -2,10 +2,7 @@
 // batch, a CNMP-shaped training step (encoder Mlp, decoder Mlp, Gaussian NLL, Adam) performs no
 // heap allocation, also when later batches are smaller.
 //
-// The test binary interposes malloc / calloc / realloc / memalign-family functions (forwarding
-// to glibc's __libc_* implementations) and counts calls while a flag is set. This catches both
-// operator new and Eigen's aligned_malloc, which calls malloc directly. Sanitizers bring their
-// own allocator, so under them the interposers are left out and the tests are skipped.
+// Allocations are counted by tests/support/allocation_counter.hpp.
 #include <gtest/gtest.h>
 
 #include <atomic>
@@ -20,86 +17,14 @@
 #include "nn/mlp.hpp"
 #include "nn/parameter.hpp"
 
-#if defined(__SANITIZE_ADDRESS__) || defined(__SANITIZE_THREAD__)
-#define CORRMP_NN_COUNT_ALLOCATIONS 0
-#elif defined(__has_feature)
-#if __has_feature(address_sanitizer) || __has_feature(thread_sanitizer) || \
-    __has_feature(memory_sanitizer)
-#define CORRMP_NN_COUNT_ALLOCATIONS 0
-#endif
-#endif
-#ifndef CORRMP_NN_COUNT_ALLOCATIONS
-#define CORRMP_NN_COUNT_ALLOCATIONS 1
-#endif
-
-namespace {
-
-std::atomic<bool> g_counting{false};
-std::atomic<long> g_allocations{0};
-
-[[maybe_unused]] void note_allocation() {
-  if (g_counting.load(std::memory_order_relaxed))
-    g_allocations.fetch_add(1, std::memory_order_relaxed);
-}
-
-}  // namespace
-
-#if CORRMP_NN_COUNT_ALLOCATIONS
-extern "C" {
-void* __libc_malloc(std::size_t size);
-void* __libc_calloc(std::size_t count, std::size_t size);
-void* __libc_realloc(void* ptr, std::size_t size);
-void* __libc_memalign(std::size_t alignment, std::size_t size);
-}
-
-extern "C" {
-void* malloc(std::size_t size) {
-  note_allocation();
-  return __libc_malloc(size);
-}
-void* calloc(std::size_t count, std::size_t size) {
-  note_allocation();
-  return __libc_calloc(count, size);
-}
-void* realloc(void* ptr, std::size_t size) {
-  note_allocation();
-  return __libc_realloc(ptr, size);
-}
-void* memalign(std::size_t alignment, std::size_t size) {
-  note_allocation();
-  return __libc_memalign(alignment, size);
-}
-void* aligned_alloc(std::size_t alignment, std::size_t size) {
-  note_allocation();
-  return __libc_memalign(alignment, size);
-}
-int posix_memalign(void** out, std::size_t alignment, std::size_t size) {
-  note_allocation();
-  void* p = __libc_memalign(alignment, size);
-  if (p == nullptr) return ENOMEM;
-  *out = p;
-  return 0;
-}
-}
-
-#endif  // CORRMP_NN_COUNT_ALLOCATIONS
+#include "support/allocation_counter.hpp"
 
 namespace corrmp::nn {
 namespace {
 
-// Counts heap allocations made by `body`.
-template <class F>
-long count_allocations(F&& body) {
-  g_allocations = 0;
-  g_counting = true;
-  body();
-  g_counting = false;
-  return g_allocations.load();
-}
-
 TEST(NoAllocation, CounterSeesAllocations) {
-  if (!CORRMP_NN_COUNT_ALLOCATIONS) GTEST_SKIP() << "allocation counting is off under sanitizers";
-  const long n = count_allocations([] {
+  if (!testing::kAllocationCounting) GTEST_SKIP() << "allocation counting is off under sanitizers";
+  const long n = testing::count_allocations([] {
     void* volatile p = std::malloc(64);
     std::free(p);
     Eigen::VectorXf* volatile v = new Eigen::VectorXf(100);
@@ -159,12 +84,12 @@ class CnmpLikeStep {
 };
 
 TEST(NoAllocation, WarmedUpCnmpTrainingStepDoesNotAllocate) {
-  if (!CORRMP_NN_COUNT_ALLOCATIONS) GTEST_SKIP() << "allocation counting is off under sanitizers";
+  if (!testing::kAllocationCounting) GTEST_SKIP() << "allocation counting is off under sanitizers";
   Rng rng(90);
   CnmpLikeStep step(rng);
   step.run(8, 8, rng);  // warm-up with the largest batch
   float loss = 0.0f;
-  const long allocations = count_allocations([&] {
+  const long allocations = testing::count_allocations([&] {
     for (Index n = 1; n <= 8; ++n) loss += step.run(n, 9 - n, rng);
   });
   EXPECT_EQ(allocations, 0);
