@@ -4,7 +4,10 @@
 #include <fmt/format.h>
 #include <spdlog/version.h>
 #include <sqlite3.h>
+
+#include <opencv2/core/version.hpp>
 #include <Eigen/Core>
+#include <LinearMath/btScalar.h>
 
 #include <array>
 #include <cstdio>
@@ -44,6 +47,8 @@ std::vector<std::pair<std::string, std::string>> library_versions() {
       {"eigen",
        fmt::format("{}.{}.{}", EIGEN_WORLD_VERSION, EIGEN_MAJOR_VERSION, EIGEN_MINOR_VERSION)},
       {"sqlite", sqlite3_libversion()},
+      {"bullet", fmt::format("{}", btGetVersion())},
+      {"opencv", CV_VERSION},
       {"spdlog", fmt::format("{}.{}.{}", SPDLOG_VER_MAJOR, SPDLOG_VER_MINOR, SPDLOG_VER_PATCH)},
       {"fmt", fmt::format("{}", FMT_VERSION)},
       {"compiler", __VERSION__},
