@@ -5,11 +5,11 @@
 #include <fmt/os.h>
 #include <spdlog/spdlog.h>
 
+#include <algorithm>
 #include <map>
 
 #include "cnmp/cnmp_trainer.hpp"
 #include "core/interrupt.hpp"
-#include "core/json_writer.hpp"
 #include "core/progress.hpp"
 
 namespace corrmp {
@@ -99,9 +99,10 @@ EnvironmentEvaluation evaluate_in_environment(Environment& environment, Demonstr
       const Eigen::MatrixXd query =
           Eigen::VectorXd::LinSpaced(points_of(env_segments, segment), 0.0, 1.0);
       const Eigen::MatrixXd path = policy.generate(segment, start, context, query).mean;
-      if (points_of(env_segments, segment) == path.rows() &&
+      const bool whole_skill =
           std::none_of(env_segments.begin(), env_segments.end(),
-                       [&](const SegmentInfo& s) { return s.name == segment; })) {
+                       [&](const SegmentInfo& s) { return s.name == segment; });
+      if (whole_skill) {
         split_into_segments(env_segments, path, trajectories);
       } else {
         trajectories.generated[segment] = path;
