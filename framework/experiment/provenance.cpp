@@ -5,9 +5,9 @@
 #include <spdlog/version.h>
 #include <sqlite3.h>
 
-#include <opencv2/core/version.hpp>
-#include <Eigen/Core>
 #include <LinearMath/btScalar.h>
+#include <Eigen/Core>
+#include <opencv2/core/version.hpp>
 
 #include <array>
 #include <cstdio>
