@@ -177,8 +177,12 @@ void emit(const ConfigNode& node, YAML::Emitter& out) {
 
 }  // namespace
 
-std::string ConfigNode::to_yaml_string() const {
+std::string ConfigNode::to_yaml_string(bool flow) const {
   YAML::Emitter out;
+  if (flow) {
+    out.SetMapFormat(YAML::Flow);
+    out.SetSeqFormat(YAML::Flow);
+  }
   emit(*this, out);
   return std::string(out.c_str()) + "\n";
 }

@@ -53,7 +53,8 @@ class ConfigNode {
   // Deep merge: maps are merged key by key, anything else is replaced.
   void merge_from(const ConfigNode& overlay);
 
-  std::string to_yaml_string() const;
+  // Block-style YAML text, or with `flow` everything on one line ({a: 1, b: [2]}).
+  std::string to_yaml_string(bool flow = false) const;
 
  private:
   Kind kind_ = Kind::Null;

@@ -27,7 +27,8 @@ class FieldDocs {
                   const FieldRule& rule = {}) {
     FieldDoc doc{prefix_ + key, type_name(value), "", description,
                  rule.is_required ? "required" : rule.describe()};
-    if (!rule.is_required) doc.default_value = default_text(value);
+    // A nested struct's fields are documented one by one below it.
+    if (!rule.is_required && !has_describe<T>::value) doc.default_value = default_text(value);
     docs_.push_back(doc);
     if constexpr (has_describe<T>::value) {
       FieldDocs nested;
@@ -75,7 +76,7 @@ class FieldDocs {
       T copy = value;
       ConfigReader reader(node, "");
       reader("v", copy, "");
-      std::string text = node.find("v")->to_yaml_string();
+      std::string text = node.find("v")->to_yaml_string(true);
       while (!text.empty() && text.back() == '\n') text.pop_back();
       return text;
     }
