@@ -75,6 +75,13 @@ Eigen::MatrixXd stack_rows(const std::vector<CnmpTrajectory>& data, bool context
 
 }  // namespace
 
+double scheduled_learning_rate(const CnmpTrainingParams& params, int64_t update) {
+  if (params.final_learning_rate <= 0.0) return params.learning_rate;
+  const double progress = static_cast<double>(update - 1) / params.updates;
+  return params.final_learning_rate + (params.learning_rate - params.final_learning_rate) *
+                                          (1.0 + std::cos(M_PI * progress)) / 2.0;
+}
+
 double mean_row_distance(const Eigen::MatrixXd& a, const Eigen::MatrixXd& b) {
   return (a - b).rowwise().norm().mean();
 }
@@ -116,14 +123,8 @@ TrainingReport train_cnmp(CnmpModel& model, const std::vector<CnmpTrajectory>& t
   const auto start = std::chrono::steady_clock::now();
   Progress progress(label, params.updates);
   std::string status;
-  const bool schedule = params.final_learning_rate > 0.0;
   for (int64_t update = 1; update <= params.updates; ++update) {
-    if (schedule && (update - 1) % 100 == 0) {
-      const double progress_fraction = static_cast<double>(update - 1) / params.updates;
-      adam.set_learning_rate(params.final_learning_rate +
-                             (params.learning_rate - params.final_learning_rate) *
-                                 (1.0 + std::cos(M_PI * progress_fraction)) / 2.0);
-    }
+    if ((update - 1) % 100 == 0) adam.set_learning_rate(scheduled_learning_rate(params, update));
     sampler.draw(rng);
     adam.zero_grad();
     const float loss = sampler.step(model.network());

@@ -69,6 +69,10 @@ struct TrainingReport {
 // queried at all its time steps, against the trajectory (data units).
 TrajectoryError prediction_error(CnmpModel& model, const std::vector<CnmpTrajectory>& data);
 
+// The learning rate of update `update` (1-based): constant, or the cosine
+// schedule when final_learning_rate > 0.
+double scheduled_learning_rate(const CnmpTrainingParams& params, int64_t update);
+
 // Mean Euclidean distance between rows of two equally shaped matrices.
 double mean_row_distance(const Eigen::MatrixXd& a, const Eigen::MatrixXd& b);
 

@@ -96,3 +96,24 @@ TEST(CnmpTrainer, RejectsTrajectoriesOfTheWrongShape) {
 
 }  // namespace
 }  // namespace corrmp
+
+namespace corrmp {
+namespace {
+
+TEST(CnmpTrainer, TheLearningRateIsConstantOrFollowsACosineDown) {
+  CnmpTrainingParams p;
+  p.updates = 1000;
+  p.learning_rate = 1e-3;
+  EXPECT_DOUBLE_EQ(scheduled_learning_rate(p, 1), 1e-3);
+  EXPECT_DOUBLE_EQ(scheduled_learning_rate(p, 1000), 1e-3);
+  p.final_learning_rate = 1e-4;
+  EXPECT_DOUBLE_EQ(scheduled_learning_rate(p, 1), 1e-3);
+  EXPECT_NEAR(scheduled_learning_rate(p, 501), 5.5e-4, 1e-12);
+  EXPECT_NEAR(scheduled_learning_rate(p, 1000), 1e-4, 1e-8);
+  for (int64_t u = 2; u <= 1000; ++u) {
+    EXPECT_LE(scheduled_learning_rate(p, u), scheduled_learning_rate(p, u - 1));
+  }
+}
+
+}  // namespace
+}  // namespace corrmp
