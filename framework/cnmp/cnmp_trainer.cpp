@@ -86,18 +86,19 @@ double mean_row_distance(const Eigen::MatrixXd& a, const Eigen::MatrixXd& b) {
   return (a - b).rowwise().norm().mean();
 }
 
+Eigen::MatrixXd first_observation(const Eigen::MatrixXd& x, const Eigen::MatrixXd& y) {
+  Eigen::MatrixXd first(1, x.cols() + y.cols());
+  first << x.row(0), y.row(0);
+  return first;
+}
+
 TrajectoryError prediction_error(CnmpModel& model, const std::vector<CnmpTrajectory>& data) {
-  TrajectoryError error;
-  if (data.empty()) return error;
+  TrajectoryErrorAccumulator errors;
   for (const auto& t : data) {
-    Eigen::MatrixXd first(1, t.x.cols() + t.y.cols());
-    first << t.x.row(0), t.y.row(0);
-    const CnmpPrediction prediction = model.predict(first, t.context, t.x);
-    const double e = mean_row_distance(prediction.mean, t.y);
-    error.mean += e / static_cast<double>(data.size());
-    error.max = std::max(error.max, e);
+    const CnmpPrediction prediction = model.predict(first_observation(t.x, t.y), t.context, t.x);
+    errors.add(mean_row_distance(prediction.mean, t.y));
   }
-  return error;
+  return errors.result();
 }
 
 TrainingReport train_cnmp(CnmpModel& model, const std::vector<CnmpTrajectory>& train,

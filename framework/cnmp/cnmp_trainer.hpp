@@ -11,6 +11,7 @@
 #pragma once
 
 #include <Eigen/Core>
+#include <algorithm>
 #include <string>
 #include <vector>
 
@@ -56,6 +57,26 @@ struct TrajectoryError {
   double mean = 0.0;  // over trajectories of the time-averaged Euclidean error
   double max = 0.0;   // the largest time-averaged error of one trajectory
 };
+
+// Collects the time-averaged errors of trajectories into their mean and max.
+class TrajectoryErrorAccumulator {
+ public:
+  void add(double error) {
+    sum_ += error;
+    max_ = std::max(max_, error);
+    ++count_;
+  }
+  int count() const { return count_; }
+  TrajectoryError result() const { return {count_ > 0 ? sum_ / count_ : 0.0, max_}; }
+
+ private:
+  double sum_ = 0.0, max_ = 0.0;
+  int count_ = 0;
+};
+
+// The observation a prediction is conditioned on: the trajectory's first point
+// as one row (x then y).
+Eigen::MatrixXd first_observation(const Eigen::MatrixXd& x, const Eigen::MatrixXd& y);
 
 struct TrainingReport {
   int64_t updates = 0;

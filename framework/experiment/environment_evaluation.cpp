@@ -18,9 +18,8 @@ namespace {
 
 const std::vector<std::string> kCorrections{"push", "none", "pull"};
 
-struct TrialTrajectories {
-  std::map<std::string, Eigen::MatrixXd> generated;  // per environment segment
-};
+// Generated trajectories of one trial, per environment segment.
+using TrialTrajectories = std::map<std::string, Eigen::MatrixXd>;
 
 // Splits a whole-trajectory prediction into the environment's segments.
 void split_into_segments(const std::vector<SegmentInfo>& segments, const Eigen::MatrixXd& full,
@@ -28,7 +27,7 @@ void split_into_segments(const std::vector<SegmentInfo>& segments, const Eigen::
   Eigen::Index row = 0;
   for (const auto& s : segments) {
     if (row + s.points > full.rows()) return;
-    out.generated[s.name] = full.middleRows(row, s.points);
+    out[s.name] = full.middleRows(row, s.points);
     row += s.points;
   }
 }
@@ -41,17 +40,6 @@ int points_of(const std::vector<SegmentInfo>& segments, const std::string& name)
   }
   return total;  // a whole-trajectory segment spans them all
 }
-
-struct ErrorStats {
-  double sum = 0, max = 0;
-  int count = 0;
-  void add(double e) {
-    sum += e;
-    max = std::max(max, e);
-    ++count;
-  }
-  double mean() const { return count > 0 ? sum / count : std::nan(""); }
-};
 
 std::string percent(int part, int whole) {
   return whole > 0 ? fmt::format("{:.0f}%", 100.0 * part / whole) : "-";
@@ -66,7 +54,7 @@ EnvironmentEvaluation evaluate_in_environment(Environment& environment, Demonstr
   EnvironmentEvaluation result;
   const std::vector<SegmentInfo> env_segments = environment.segments();
   const bool images = extractor != nullptr && extractor->needs_images();
-  std::map<std::string, ErrorStats> errors;
+  std::map<std::string, TrajectoryErrorAccumulator> errors;
   std::map<std::string, std::map<std::string, int>> choices;  // expected -> chosen -> count
   std::map<std::string, int> expected_count, matched, succeeded;
   std::string csv = "trial,segment,step,x,y,z,expert_x,expert_y,expert_z\n";
@@ -105,7 +93,7 @@ EnvironmentEvaluation evaluate_in_environment(Environment& environment, Demonstr
       if (whole_skill) {
         split_into_segments(env_segments, path, trajectories);
       } else {
-        trajectories.generated[segment] = path;
+        trajectories[segment] = path;
       }
       failure = environment.execute(path);
       if (!failure.empty()) break;
@@ -113,10 +101,10 @@ EnvironmentEvaluation evaluate_in_environment(Environment& environment, Demonstr
     const Outcome outcome = environment.outcome();
     record.success = failure.empty() && outcome.success;
     record.failure = failure.empty() ? outcome.failure : failure;
-    if (trajectories.generated.count("cor")) {
-      record.chosen_action = environment.classify_correction(trajectories.generated["cor"]);
+    if (trajectories.count("cor")) {
+      record.chosen_action = environment.classify_correction(trajectories["cor"]);
     }
-    for (const auto& [segment, path] : trajectories.generated) {
+    for (const auto& [segment, path] : trajectories) {
       const SegmentTrajectory* demonstrated = reference.find(segment);
       if (demonstrated == nullptr || demonstrated->y.rows() != path.rows()) continue;
       errors[segment].add(100.0 * mean_row_distance(path, demonstrated->y));
@@ -147,8 +135,8 @@ EnvironmentEvaluation evaluate_in_environment(Environment& environment, Demonstr
   for (const auto& [segment, name] :
        std::vector<std::pair<std::string, std::string>>{{"cor", "cor_mp"}, {"post", "post_mp"}}) {
     if (!errors.count(segment)) continue;
-    m.push_back({name + "_error_mean_cm", errors[segment].mean()});
-    m.push_back({name + "_error_max_cm", errors[segment].max});
+    m.push_back({name + "_error_mean_cm", errors[segment].result().mean});
+    m.push_back({name + "_error_max_cm", errors[segment].result().max});
   }
   for (const auto& c : kCorrections) {
     if (expected_count[c] == 0) continue;
@@ -177,8 +165,8 @@ EnvironmentEvaluation evaluate_in_environment(Environment& environment, Demonstr
   for (const auto& [segment, name] :
        std::vector<std::pair<std::string, std::string>>{{"cor", "cor-MP"}, {"post", "post-MP"}}) {
     if (!errors.count(segment)) continue;
-    t += fmt::format("  {:<10} {:>8.2f} {:>8.2f}\n", name, errors[segment].mean(),
-                     errors[segment].max);
+    const TrajectoryError e = errors[segment].result();
+    t += fmt::format("  {:<10} {:>8.2f} {:>8.2f}\n", name, e.mean, e.max);
   }
   if (!trajectory_csv.empty()) fmt::output_file(trajectory_csv).print("{}", csv);
   return result;

@@ -28,19 +28,16 @@ std::vector<SegmentErrors> evaluate_offline(Policy& policy,
   if (demonstrations.empty()) return results;
   if (!csv_directory.empty()) std::filesystem::create_directories(csv_directory);
   for (const std::string& segment : policy.segments()) {
-    SegmentErrors result{segment, {}};
+    TrajectoryErrorAccumulator errors;
     std::string csv;
     for (size_t d = 0; d < demonstrations.size(); ++d) {
       const SegmentTrajectory* s = demonstrations[d].find(segment);
       if (s == nullptr) {
         throw std::runtime_error(fmt::format("demonstration {} has no segment '{}'", d, segment));
       }
-      Eigen::MatrixXd start(1, s->x.cols() + s->y.cols());
-      start << s->x.row(0), s->y.row(0);
-      const CnmpPrediction p = policy.generate(segment, start, s->context, s->x);
-      const double e = mean_row_distance(p.mean, s->y);
-      result.error.mean += e / static_cast<double>(demonstrations.size());
-      result.error.max = std::max(result.error.max, e);
+      const CnmpPrediction p =
+          policy.generate(segment, first_observation(s->x, s->y), s->context, s->x);
+      errors.add(mean_row_distance(p.mean, s->y));
       if (csv_directory.empty()) continue;
       if (csv.empty()) csv = csv_header(*s) + "\n";
       for (Eigen::Index t = 0; t < s->x.rows(); ++t) {
@@ -55,7 +52,7 @@ std::vector<SegmentErrors> evaluate_offline(Policy& policy,
       auto out = fmt::output_file(csv_directory + "/" + segment + ".csv");
       out.print("{}", csv);
     }
-    results.push_back(result);
+    results.push_back({segment, errors.result()});
   }
   return results;
 }
