@@ -23,6 +23,10 @@ struct SegmentTrajectory {
   Eigen::MatrixXd y;
   Eigen::VectorXd context;  // the segment's context vector; may be empty
   Observation start;        // what was observed at the segment's start (critical point)
+  // The segment's span in the whole skill's normalised time (its critical
+  // points in a monolithic recording of the same demonstration).
+  double phase_begin = 0.0;
+  double phase_end = 1.0;
 };
 
 struct Demonstration {

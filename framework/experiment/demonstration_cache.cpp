@@ -17,7 +17,7 @@ namespace corrmp {
 namespace {
 
 constexpr char kMagic[4] = {'C', 'M', 'P', 'D'};
-constexpr uint32_t kVersion = 1;
+constexpr uint32_t kVersion = 2;
 
 class Writer {
  public:
@@ -118,6 +118,8 @@ void write_demo(Writer& w, const Demonstration& demo) {
     w.matrix(s.x);
     w.matrix(s.y);
     w.matrix(s.context);
+    w.pod(s.phase_begin);
+    w.pod(s.phase_end);
     w.pod(static_cast<uint32_t>(s.start.state.size()));
     for (const auto& [key, value] : s.start.state) {
       w.string(key);
@@ -139,6 +141,8 @@ Demonstration read_demo(Reader& r) {
     s.x = r.matrix();
     s.y = r.matrix();
     s.context = r.matrix();
+    s.phase_begin = r.pod<double>();
+    s.phase_end = r.pod<double>();
     const auto entries = r.pod<uint32_t>();
     for (uint32_t k = 0; k < entries; ++k) {
       const std::string key = r.string();

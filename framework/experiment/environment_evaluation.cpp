@@ -21,14 +21,20 @@ const std::vector<std::string> kCorrections{"push", "none", "pull"};
 // Generated trajectories of one trial, per environment segment.
 using TrialTrajectories = std::map<std::string, Eigen::MatrixXd>;
 
-// Splits a whole-trajectory prediction into the environment's segments.
-void split_into_segments(const std::vector<SegmentInfo>& segments, const Eigen::MatrixXd& full,
-                         TrialTrajectories& out) {
-  Eigen::Index row = 0;
+// A whole-skill policy's segments, for the errors and the decision: it is
+// queried over each segment's span in the reference demonstration's timing,
+// between the critical points the expert passed at its nominal tempo. What
+// is executed is the policy's own uniform query; this only reads it.
+void split_at_reference_phases(Policy& policy, const std::string& whole,
+                               const std::vector<SegmentInfo>& segments,
+                               const Demonstration& reference, const Eigen::MatrixXd& start,
+                               const Eigen::VectorXd& context, TrialTrajectories& out) {
   for (const auto& s : segments) {
-    if (row + s.points > full.rows()) return;
-    out[s.name] = full.middleRows(row, s.points);
-    row += s.points;
+    const SegmentTrajectory* demonstrated = reference.find(s.name);
+    if (demonstrated == nullptr) continue;
+    const Eigen::MatrixXd query =
+        Eigen::VectorXd::LinSpaced(s.points, demonstrated->phase_begin, demonstrated->phase_end);
+    out[s.name] = policy.generate(whole, start, context, query).mean;
   }
 }
 
@@ -91,7 +97,8 @@ EnvironmentEvaluation evaluate_in_environment(Environment& environment, Demonstr
           std::none_of(env_segments.begin(), env_segments.end(),
                        [&](const SegmentInfo& s) { return s.name == segment; });
       if (whole_skill) {
-        split_into_segments(env_segments, path, trajectories);
+        split_at_reference_phases(policy, segment, env_segments, reference, start, context,
+                                  trajectories);
       } else {
         trajectories[segment] = path;
       }

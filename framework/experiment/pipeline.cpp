@@ -60,7 +60,7 @@ std::string demonstrations_key(const Experiment& experiment) {
   const auto& config = experiment.config;
   if (!experiment.environment) return "";
   const std::string text =
-      fmt::format("v2 seed {}\n{}{}", config.seed, config.environment->node->to_yaml_string(),
+      fmt::format("v3 seed {}\n{}{}", config.seed, config.environment->node->to_yaml_string(),
                   config.demonstrations->node->to_yaml_string());
   return fmt::format("{:016x}", fnv1a64(text));
 }

@@ -70,6 +70,56 @@ TEST(CorridorPush, TouchingTheCorridorFailsTheTrial) {
   EXPECT_EQ(outcome.failure, "the object touched the corridor");
 }
 
+// The same scenario demonstrated at two human tempos: the same strokes, the
+// critical points at different times of the whole-skill recording.
+TEST(CorridorExpert, TempoMovesTheCriticalPointsInTimeButNotThePath) {
+  CorridorPush env{CorridorPushParams{}};
+  CorridorExpertParams params;
+  params.tempo_variation = 0.3;
+  CorridorExpert expert{params};
+  const Scenario scenario{{"corridor_offset", -0.02}, {"object_dx", 0.0}, {"object_dy", 0.0}};
+  Rng first_rng(1), second_rng(2);
+  const Demonstration nominal = expert.demonstrate(env, scenario, false);
+  const Demonstration first = expert.demonstrate(env, scenario, false, &first_rng);
+  const Demonstration second = expert.demonstrate(env, scenario, false, &second_rng);
+  for (const Demonstration* demo : {&nominal, &first, &second}) {
+    EXPECT_EQ(demo->correction, "pull");
+    // The segments tile the skill's time, and the recording passes each
+    // critical point (a segment's last point) at the segment's phase end.
+    const Eigen::MatrixXd& full = demo->find("full")->y;
+    double begin = 0.0;
+    for (const char* name : {"pre", "cor", "post"}) {
+      const SegmentTrajectory& s = *demo->find(name);
+      EXPECT_EQ(s.phase_begin, begin) << name;
+      EXPECT_GT(s.phase_end, s.phase_begin) << name;
+      begin = s.phase_end;
+      const auto at = static_cast<Eigen::Index>(std::lround(s.phase_end * (full.rows() - 1)));
+      double nearest = 1.0;
+      for (Eigen::Index row = std::max<Eigen::Index>(at - 1, 0);
+           row <= std::min<Eigen::Index>(at + 1, full.rows() - 1); ++row) {
+        nearest = std::min(nearest, (full.row(row) - s.y.bottomRows(1)).norm());
+      }
+      EXPECT_LT(nearest, 1e-12) << name;
+    }
+    EXPECT_DOUBLE_EQ(begin, 1.0);
+    // Only the ticks at which contacts are resolved differ: the object ends
+    // where it does at the nominal tempo to well under a millimetre.
+    EXPECT_LT((demo->find("full")->y.bottomRows(1) - nominal.find("full")->y.bottomRows(1)).norm(),
+              1e-4);
+    EXPECT_EQ(demo->find("cor")->y.topRows(1), nominal.find("cor")->y.topRows(1));
+  }
+  EXPECT_NE(first.find("pre")->phase_end, second.find("pre")->phase_end);
+  EXPECT_NE(first.find("cor")->y, second.find("cor")->y);
+  // Without variation the collecting expert is the nominal one.
+  params.tempo_variation = 0.0;
+  Rng unused(3);
+  const Demonstration steady = CorridorExpert{params}.demonstrate(env, scenario, false, &unused);
+  for (size_t s = 0; s < nominal.segments.size(); ++s) {
+    EXPECT_EQ(steady.segments[s].y, nominal.segments[s].y);
+    EXPECT_EQ(steady.segments[s].phase_end, nominal.segments[s].phase_end);
+  }
+}
+
 TEST(PathSampling, KeepsEveryWaypointAndSpacesPointsEvenly) {
   const std::vector<Eigen::Vector3d> waypoints{{0, 0, 0}, {0.1, 0, 0}, {0.1, 0.1, 0}};
   const Eigen::MatrixXd path = sample_path(waypoints, 21);
@@ -82,6 +132,8 @@ TEST(PathSampling, KeepsEveryWaypointAndSpacesPointsEvenly) {
   EXPECT_EQ(still.row(4), Eigen::RowVector3d(1, 2, 3));
   EXPECT_THROW(sample_path(waypoints, 2), std::invalid_argument);
   EXPECT_EQ(normalised_time(3)(1, 0), 0.5);
+  EXPECT_NEAR(weighted_length(waypoints), 0.2, 1e-15);
+  EXPECT_NEAR(weighted_length(waypoints, {3.0, 1.0}), 0.4, 1e-15);
 }
 
 }  // namespace

@@ -16,6 +16,8 @@ Demonstration a_demonstration(double value) {
   s.x = Eigen::MatrixXd::Random(5, 1);
   s.y = Eigen::MatrixXd::Random(5, 3) * value;
   s.context = Eigen::VectorXd::Constant(1, 1.0 / 3.0);
+  s.phase_begin = 0.1 * value;
+  s.phase_end = 1.0 / 3.0;
   s.start.state = {{"corridor_x", 0.4512345678901234}, {"object_x", value}};
   s.start.rgb = cv::Mat(4, 6, CV_8UC3, cv::Scalar(10, 200, 30));
   s.start.depth = cv::Mat(4, 6, CV_32FC1, cv::Scalar(0.612345f));
@@ -42,6 +44,8 @@ TEST(DemonstrationCache, RoundTripsExactly) {
   EXPECT_EQ(a.x, b.x);
   EXPECT_EQ(a.y, b.y);
   EXPECT_EQ(a.context, b.context);
+  EXPECT_EQ(a.phase_begin, b.phase_begin);
+  EXPECT_EQ(a.phase_end, b.phase_end);
   EXPECT_EQ(a.start.state, b.start.state);
   EXPECT_EQ(cv::norm(a.start.rgb, b.start.rgb, cv::NORM_INF), 0.0);
   EXPECT_EQ(cv::norm(a.start.depth, b.start.depth, cv::NORM_INF), 0.0);

@@ -92,31 +92,60 @@ std::vector<Eigen::Vector3d> CorridorExpert::post_waypoints(const CorridorPush& 
 
 Demonstration CorridorExpert::demonstrate(Environment& environment, const Scenario& scenario,
                                           bool with_images) {
+  return demonstrate(environment, scenario, with_images, nullptr);
+}
+
+Demonstration CorridorExpert::demonstrate(Environment& environment, const Scenario& scenario,
+                                          bool with_images, Rng* tempo_rng) const {
   CorridorPush& env = as_corridor(environment);
   const auto& p = env.params();
   env.reset(scenario);
   Demonstration demo;
   demo.scenario = scenario_json(scenario);
+  // The whole skill as one timed path: every stroke's waypoints and slowness.
+  std::vector<Eigen::Vector3d> skill_waypoints;
+  std::vector<double> skill_slowness;
+  std::vector<double> segment_durations;
   auto run = [&](const std::string& name, const std::vector<Eigen::Vector3d>& waypoints, int points,
-                 Observation start, const std::vector<double>& slowness = {}) {
+                 Observation start, std::vector<double> slowness) {
+    if (slowness.empty()) slowness.assign(waypoints.size() - 1, 1.0);
+    for (double& s : slowness) s *= tempo_rng ? tempo_factor(*tempo_rng) : 1.0;
     const Eigen::MatrixXd path = sample_path(waypoints, points, slowness);
     const std::string failure = env.execute(path);
     if (!failure.empty())
       throw std::runtime_error("the expert's " + name + "-MP failed: " + failure);
     demo.segments.push_back(segment_of(name, path, std::move(start)));
+    skill_waypoints.insert(skill_waypoints.end(),
+                           waypoints.begin() + (skill_waypoints.empty() ? 0 : 1), waypoints.end());
+    skill_slowness.insert(skill_slowness.end(), slowness.begin(), slowness.end());
+    segment_durations.push_back(weighted_length(waypoints, slowness));
   };
   Observation initial = env.observe(false);
-  run("pre", pre_waypoints(env), p.pre_points, initial);
+  run("pre", pre_waypoints(env), p.pre_points, initial, {});
   Observation critical = env.observe(with_images);
   demo.correction = decide(env);
   run("cor", cor_waypoints(env, demo.correction), p.cor_points, critical, cor_slowness());
-  run("post", post_waypoints(env), p.post_points, env.observe(with_images));
+  run("post", post_waypoints(env), p.post_points, env.observe(with_images), {});
 
+  // The whole skill as the demonstrator's recording at a fixed rate: time is
+  // uniform in the timed path, so the critical points fall wherever this
+  // demonstration's tempo put them. Each segment's span is kept.
   const int total = p.pre_points + p.cor_points + p.post_points;
-  Eigen::MatrixXd full(total, 3);
-  full << demo.segments[0].y, demo.segments[1].y, demo.segments[2].y;
+  const Eigen::MatrixXd full = sample_path(skill_waypoints, total, skill_slowness);
+  double elapsed = 0.0, duration = 0.0;
+  for (double d : segment_durations) duration += d;
+  for (size_t i = 0; i < segment_durations.size(); ++i) {
+    demo.segments[i].phase_begin = duration > 0 ? elapsed / duration : 0.0;
+    elapsed += segment_durations[i];
+    demo.segments[i].phase_end = duration > 0 ? elapsed / duration : 1.0;
+  }
   demo.segments.push_back(segment_of("full", full, initial));
   return demo;
+}
+
+double CorridorExpert::tempo_factor(Rng& rng) const {
+  const double v = params_.tempo_variation;
+  return v > 0 ? rng.uniform(1.0 - v, 1.0 + v) : 1.0;
 }
 
 DemonstrationSplit CorridorExpert::collect(Environment* environment, Rng& rng) {
@@ -132,7 +161,7 @@ DemonstrationSplit CorridorExpert::collect(Environment* environment, Rng& rng) {
     check_interrupt();
     const Scenario scenario = environment->sample_scenario(rng);
     try {
-      Demonstration demo = demonstrate(*environment, scenario, params_.images);
+      Demonstration demo = demonstrate(*environment, scenario, params_.images, &rng);
       const Outcome outcome = environment->outcome();
       if (!outcome.success) throw std::runtime_error(outcome.failure);
       auto& into =

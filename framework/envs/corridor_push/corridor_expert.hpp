@@ -6,7 +6,11 @@
 // still goes round to the side, but moves the object by nothing);
 // post-MP pushes the object through the corridor. Each demonstration records
 // the gripper's x, y, z of every segment, the observations at the segment
-// starts (with head-camera images when asked) and the decision.
+// starts (with head-camera images when asked) and the decision, plus the whole
+// skill as one recording at a fixed rate (the monolithic baseline's data).
+// Like a human's, the expert's tempo varies from stroke to stroke, so the
+// critical points fall at different times of the whole recording; each
+// segment is normalised in time between its own critical points.
 #pragma once
 
 #include <string>
@@ -23,6 +27,7 @@ struct CorridorExpertParams {
   int validation = 100;
   bool images = true;
   int max_attempts_factor = 2;
+  double tempo_variation = 0.25;
 
   template <class Fields>
   void describe(Fields& f) {
@@ -32,6 +37,10 @@ struct CorridorExpertParams {
     f("max_attempts_factor", max_attempts_factor,
       "scenarios tried per wanted demonstration before giving up (failed ones are dropped)",
       at_least(1));
+    f("tempo_variation", tempo_variation,
+      "a human's tempo varies: each stroke takes up to this fraction more or less time "
+      "(uniform); 0 makes every demonstration of a scenario identical",
+      in_range(0.0, 0.9));
   }
 };
 
@@ -41,8 +50,13 @@ class CorridorExpert : public DemonstrationSource {
 
   DemonstrationSplit collect(Environment* environment, Rng& rng) override;
   bool needs_environment() const override { return true; }
+  // At the expert's nominal tempo (the evaluation's reference).
   Demonstration demonstrate(Environment& environment, const Scenario& scenario,
                             bool with_images) override;
+  // With `tempo_rng`, every stroke's duration is drawn (tempo_variation), as a
+  // human's varies; without, the nominal tempo.
+  Demonstration demonstrate(Environment& environment, const Scenario& scenario, bool with_images,
+                            Rng* tempo_rng) const;
 
   // The correction the expert makes at the critical point.
   static std::string decide(const CorridorPush& env);
@@ -55,6 +69,8 @@ class CorridorExpert : public DemonstrationSource {
   static std::vector<Eigen::Vector3d> post_waypoints(const CorridorPush& env);
 
  private:
+  double tempo_factor(Rng& rng) const;
+
   CorridorExpertParams params_;
 };
 

@@ -9,6 +9,26 @@ namespace corrmp {
 
 Eigen::MatrixXd normalised_time(int points) { return Eigen::VectorXd::LinSpaced(points, 0.0, 1.0); }
 
+namespace {
+
+// The slowness-weighted length from the start to each waypoint.
+std::vector<double> weighted_arc(const std::vector<Eigen::Vector3d>& waypoints,
+                                 const std::vector<double>& slowness) {
+  std::vector<double> arc{0.0};
+  for (size_t i = 1; i < waypoints.size(); ++i) {
+    const double factor = slowness.empty() ? 1.0 : slowness[i - 1];
+    arc.push_back(arc.back() + factor * (waypoints[i] - waypoints[i - 1]).norm());
+  }
+  return arc;
+}
+
+}  // namespace
+
+double weighted_length(const std::vector<Eigen::Vector3d>& waypoints,
+                       const std::vector<double>& slowness) {
+  return waypoints.empty() ? 0.0 : weighted_arc(waypoints, slowness).back();
+}
+
 Eigen::MatrixXd sample_path(const std::vector<Eigen::Vector3d>& waypoints, int points,
                             const std::vector<double>& slowness) {
   if (waypoints.empty() || points < static_cast<int>(waypoints.size())) {
@@ -20,11 +40,7 @@ Eigen::MatrixXd sample_path(const std::vector<Eigen::Vector3d>& waypoints, int p
         fmt::format("{} slowness factors for {} edges", slowness.size(), waypoints.size() - 1));
   }
   // "arc" is the slowness-weighted length: samples are even in it.
-  std::vector<double> arc{0.0};
-  for (size_t i = 1; i < waypoints.size(); ++i) {
-    const double factor = slowness.empty() ? 1.0 : slowness[i - 1];
-    arc.push_back(arc.back() + factor * (waypoints[i] - waypoints[i - 1]).norm());
-  }
+  const std::vector<double> arc = weighted_arc(waypoints, slowness);
   const double length = arc.back();
   Eigen::MatrixXd out(points, 3);
   if (length <= 0.0) {

@@ -16,6 +16,10 @@ namespace corrmp {
 Eigen::MatrixXd sample_path(const std::vector<Eigen::Vector3d>& waypoints, int points,
                             const std::vector<double>& slowness = {});
 
+// The slowness-weighted length of the path (its duration at unit speed).
+double weighted_length(const std::vector<Eigen::Vector3d>& waypoints,
+                       const std::vector<double>& slowness = {});
+
 // Column of `points` times evenly spaced in [0, 1].
 Eigen::MatrixXd normalised_time(int points);
 
