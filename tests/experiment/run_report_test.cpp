@@ -1,0 +1,164 @@
+// Tests of run reports: flattened configs, the settings a sweep varies, the
+// selection of runs, and the Markdown and CSV tables.
+#include "experiment/run_report.hpp"
+
+#include <gtest/gtest.h>
+#include <sys/wait.h>
+
+#include <fstream>
+#include <sstream>
+
+#include "config/test_files.hpp"
+
+namespace corrmp {
+namespace {
+
+using testing::TempDir;
+
+int64_t add_run(ResultStore& store, const std::string& experiment, const std::string& config,
+                double success, double cor_error) {
+  const int64_t id = store.begin_run({experiment, config, "hash", 0, "", false, ""});
+  std::vector<TrialRecord> trials;
+  for (int t = 0; t < 4; ++t) trials.push_back({t, "{}", "push", "push", t < 4 * success, ""});
+  store.complete_run(id, trials,
+                     {{"task_success_rate", success},
+                      {"decision_match_rate", 0.75},
+                      {"cor_mp_error_mean_cm", cor_error},
+                      {"cor_mp_error_max_cm", 2 * cor_error},
+                      {"demonstrations_train", 100}});
+  return id;
+}
+
+TEST(RunReport, FlattensConfigsToDottedKeys) {
+  const auto flat = flatten_yaml(
+      "seed: 3\nevaluation: {seed: 2, trials: 25}\nshape: [1, 2]\n"
+      "segments:\n  - {segment: cor, state: [corridor_x]}\n");
+  EXPECT_EQ(flat.at("seed"), "3");
+  EXPECT_EQ(flat.at("evaluation.seed"), "2");
+  EXPECT_EQ(flat.at("evaluation.trials"), "25");
+  EXPECT_EQ(flat.at("shape"), "[1, 2]");
+  EXPECT_EQ(flat.at("segments.0.segment"), "cor");
+  EXPECT_EQ(flat.at("segments.0.state"), "[corridor_x]");
+  EXPECT_EQ(flat.size(), 6u);
+}
+
+TEST(RunReport, TabulatesRunsWithTheSettingsTheyVary) {
+  TempDir dir;
+  ResultStore store(dir.file("r.sqlite"));
+  add_run(store, "sweep", "seed: 0\nevaluation: {seed: 1, trials: 4}\n", 1.0, 0.2);
+  add_run(store, "sweep", "seed: 0\nevaluation: {seed: 2, trials: 4}\n", 0.5, 0.4);
+  add_run(store, "other", "seed: 0\n", 0.25, 0.1);
+  const int64_t failed = store.begin_run({"sweep", "seed: 9\n", "hash", 0, "", false, ""});
+  store.end_run(failed, "failed", "for the test");
+
+  const auto runs = load_run_summaries(store, {});
+  ASSERT_EQ(runs.size(), 3u);
+  EXPECT_EQ(runs[0].trials, 4);
+  EXPECT_EQ(runs[1].metrics.at("task_success_rate"), 0.5);
+  const auto varying = varying_settings(runs);
+  EXPECT_EQ(varying.at("sweep"), std::vector<std::string>{"evaluation.seed"});
+  EXPECT_EQ(varying.count("other"), 0u);
+
+  ReportFormat format;
+  format.extra_metrics = {"demonstrations_train", "missing"};
+  const std::string markdown = report_markdown(runs, format);
+  EXPECT_NE(
+      markdown.find("| 1 | sweep | evaluation.seed=1 | 4 of 4 | 75% | 0.20 / 0.40 | - | 100 | - |"),
+      std::string::npos)
+      << markdown;
+  EXPECT_NE(markdown.find("| 2 | sweep | evaluation.seed=2 | 2 of 4 | 75% | 0.40 / 0.80 | - |"),
+            std::string::npos)
+      << markdown;
+  EXPECT_NE(markdown.find("| 3 | other |  | 1 of 4 |"), std::string::npos) << markdown;
+
+  const std::string csv = report_csv(runs, {});
+  EXPECT_EQ(csv.substr(0, csv.find('\n')),
+            "run,experiment,status,varies,trials,task_success_rate,decision_match_rate,"
+            "cor_mp_error_mean_cm,cor_mp_error_max_cm,post_mp_error_mean_cm,post_mp_error_max_cm");
+  EXPECT_NE(csv.find("\n2,sweep,completed,evaluation.seed=2,4,0.5,0.75,0.4,0.8,,\n"),
+            std::string::npos)
+      << csv;
+
+  ReportQuery query;
+  query.experiments = {"sweep"};
+  query.completed_only = false;
+  const auto with_failed = load_run_summaries(store, query);
+  ASSERT_EQ(with_failed.size(), 3u);
+  EXPECT_EQ(with_failed[2].status, "failed");
+  query.last = 1;
+  const auto newest = load_run_summaries(store, query);
+  ASSERT_EQ(newest.size(), 1u);
+  EXPECT_EQ(newest[0].id, failed);
+  ReportQuery by_id;
+  by_id.runs = {3, 1};
+  const auto picked = load_run_summaries(store, by_id);
+  ASSERT_EQ(picked.size(), 2u);
+  EXPECT_EQ(picked[0].id, 1);
+  EXPECT_EQ(picked[1].id, 3);
+}
+
+TEST(RunReport, AppendsThePapersRows) {
+  TempDir dir;
+  ResultStore store(dir.file("r.sqlite"));
+  add_run(store, "corridor_pc", "seed: 0\n", 1.0, 0.2);
+  ReportFormat format;
+  format.paper_tables = std::string(PROJECT_DIR) + "/assets/paper/tables.yaml";
+  const std::string markdown = report_markdown(load_run_summaries(store, {}), format);
+  EXPECT_NE(markdown.find("| | paper: pc | | 24 of 25 | 100% | 0.80 / 1.45 | 1.69 / 3.19 |"),
+            std::string::npos)
+      << markdown;
+  // The paper's AE decision match: 8 of 9 push, 6 of 6 none, 9 of 10 pull.
+  EXPECT_NE(markdown.find("| | paper: ae | | 25 of 25 | 92% | 0.80 / 0.99 | 2.64 / 4.83 |"),
+            std::string::npos)
+      << markdown;
+  EXPECT_NE(markdown.find("| | paper: mono | | 17 of 25 | 100% | 1.30 / 1.92 | 5.75 / 7.24 |"),
+            std::string::npos)
+      << markdown;
+}
+
+struct ToolOutcome {
+  int exit_code = -1;
+  std::string out, err;
+};
+
+ToolOutcome run_report_tool(const TempDir& dir, const std::string& args) {
+  const std::string out = dir.file("out.txt"), err = dir.file("err.txt");
+  const int status =
+      std::system((std::string(REPORT_BIN) + " " + args + " >" + out + " 2>" + err).c_str());
+  auto read = [](const std::string& path) {
+    std::stringstream text;
+    text << std::ifstream(path).rdbuf();
+    return text.str();
+  };
+  return {WIFEXITED(status) ? WEXITSTATUS(status) : -1, read(out), read(err)};
+}
+
+TEST(ReportTool, PrintsTheRunsOrSaysWhatIsWrongInOneLine) {
+  TempDir dir;
+  {
+    ResultStore store(dir.file("r.sqlite"));
+    add_run(store, "corridor_mono", "seed: 0\n", 0.5, 0.3);
+  }
+  const ToolOutcome ok = run_report_tool(dir, "--db " + dir.file("r.sqlite") + " --csv");
+  EXPECT_EQ(ok.exit_code, 0) << ok.err;
+  EXPECT_NE(ok.out.find("\n1,corridor_mono,completed,,4,0.5,0.75,0.3,0.6,,\n"), std::string::npos)
+      << ok.out;
+
+  const ToolOutcome missing = run_report_tool(dir, "--db " + dir.file("none.sqlite"));
+  EXPECT_EQ(missing.exit_code, 2);
+  EXPECT_EQ(missing.err,
+            "report: no result database at '" + dir.file("none.sqlite") + "' (see --db)\n");
+  EXPECT_FALSE(std::filesystem::exists(dir.file("none.sqlite")));
+
+  const ToolOutcome unmatched =
+      run_report_tool(dir, "--db " + dir.file("r.sqlite") + " --experiment nothing");
+  EXPECT_EQ(unmatched.exit_code, 1);
+  EXPECT_NE(unmatched.err.find("no run"), std::string::npos) << unmatched.err;
+
+  const ToolOutcome bad = run_report_tool(dir, "--db " + dir.file("r.sqlite") + " --last 0");
+  EXPECT_EQ(bad.exit_code, 2);
+  EXPECT_EQ(std::count(bad.err.begin(), bad.err.end(), '\n'), 1) << bad.err;
+}
+
+}  // namespace
+}  // namespace corrmp
