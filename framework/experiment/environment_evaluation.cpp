@@ -2,7 +2,6 @@
 #include "experiment/environment_evaluation.hpp"
 
 #include <fmt/format.h>
-#include <fmt/os.h>
 #include <spdlog/spdlog.h>
 
 #include <algorithm>
@@ -19,7 +18,7 @@ namespace {
 const std::vector<std::string> kCorrections{"push", "none", "pull"};
 
 // Generated trajectories of one trial, per environment segment.
-using TrialTrajectories = std::map<std::string, Eigen::MatrixXd>;
+using SegmentPaths = std::map<std::string, Eigen::MatrixXd>;
 
 // A whole-skill policy's segments, for the errors and the decision: it is
 // queried over each segment's span in the reference demonstration's timing,
@@ -28,7 +27,7 @@ using TrialTrajectories = std::map<std::string, Eigen::MatrixXd>;
 void split_at_reference_phases(Policy& policy, const std::string& whole,
                                const std::vector<SegmentInfo>& segments,
                                const Demonstration& reference, const Eigen::MatrixXd& start,
-                               const Eigen::VectorXd& context, TrialTrajectories& out) {
+                               const Eigen::VectorXd& context, SegmentPaths& out) {
   for (const auto& s : segments) {
     const SegmentTrajectory* demonstrated = reference.find(s.name);
     if (demonstrated == nullptr) continue;
@@ -55,15 +54,13 @@ std::string percent(int part, int whole) {
 
 EnvironmentEvaluation evaluate_in_environment(Environment& environment, DemonstrationSource& expert,
                                               ContextExtractor* extractor, Policy& policy,
-                                              int trials, Rng& rng, const std::string& label,
-                                              const std::string& trajectory_csv) {
+                                              int trials, Rng& rng, const std::string& label) {
   EnvironmentEvaluation result;
   const std::vector<SegmentInfo> env_segments = environment.segments();
   const bool images = extractor != nullptr && extractor->needs_images();
   std::map<std::string, TrajectoryErrorAccumulator> errors;
   std::map<std::string, std::map<std::string, int>> choices;  // expected -> chosen -> count
   std::map<std::string, int> expected_count, matched, succeeded;
-  std::string csv = "trial,segment,step,x,y,z,expert_x,expert_y,expert_z\n";
   Progress progress("evaluation", trials);
   int successes = 0, matches = 0;
   for (int trial = 0; trial < trials; ++trial) {
@@ -81,7 +78,7 @@ EnvironmentEvaluation evaluate_in_environment(Environment& environment, Demonstr
     }
 
     environment.reset(scenario);
-    TrialTrajectories trajectories;
+    SegmentPaths trajectories;
     std::string failure;
     for (const std::string& segment : policy.segments()) {
       const Observation observation = environment.observe(images);
@@ -111,16 +108,16 @@ EnvironmentEvaluation evaluate_in_environment(Environment& environment, Demonstr
     if (trajectories.count("cor")) {
       record.chosen_action = environment.classify_correction(trajectories["cor"]);
     }
+    TrialTrajectories paths{trial, record.success, record.expected_action, record.chosen_action, {},
+                            {}};
     for (const auto& [segment, path] : trajectories) {
       const SegmentTrajectory* demonstrated = reference.find(segment);
       if (demonstrated == nullptr || demonstrated->y.rows() != path.rows()) continue;
       errors[segment].add(100.0 * mean_row_distance(path, demonstrated->y));
-      for (Eigen::Index t = 0; t < path.rows(); ++t) {
-        csv += fmt::format("{},{},{},{},{},{},{},{},{}\n", trial, segment, t, path(t, 0),
-                           path(t, 1), path(t, 2), demonstrated->y(t, 0), demonstrated->y(t, 1),
-                           demonstrated->y(t, 2));
-      }
+      paths.generated[segment] = path;
+      paths.expert[segment] = demonstrated->y;
     }
+    result.trajectories.push_back(std::move(paths));
     successes += record.success;
     const bool match =
         !record.expected_action.empty() && record.expected_action == record.chosen_action;
@@ -175,7 +172,6 @@ EnvironmentEvaluation evaluate_in_environment(Environment& environment, Demonstr
     const TrajectoryError e = errors[segment].result();
     t += fmt::format("  {:<10} {:>8.2f} {:>8.2f}\n", name, e.mean, e.max);
   }
-  if (!trajectory_csv.empty()) fmt::output_file(trajectory_csv).print("{}", csv);
   return result;
 }
 

@@ -7,6 +7,7 @@
 // per expected correction) and Table II (cor-MP and post-MP errors in cm).
 #pragma once
 
+#include <map>
 #include <string>
 #include <vector>
 
@@ -18,17 +19,23 @@
 
 namespace corrmp {
 
+// One trial's generated and expert trajectories (rows x, y, z), per segment.
+struct TrialTrajectories {
+  int trial = 0;
+  bool success = false;
+  std::string expected_action, chosen_action;
+  std::map<std::string, Eigen::MatrixXd> generated, expert;
+};
+
 struct EnvironmentEvaluation {
   std::vector<TrialRecord> trials;
+  std::vector<TrialTrajectories> trajectories;
   std::vector<MetricRecord> metrics;
   std::string tables;  // Table I and Table II rows, as text
 };
 
-// `trajectory_csv`: when not empty, every generated and expert trajectory is
-// written there (trial, segment, step, generated x/y/z, expert x/y/z).
 EnvironmentEvaluation evaluate_in_environment(Environment& environment, DemonstrationSource& expert,
                                               ContextExtractor* extractor, Policy& policy,
-                                              int trials, Rng& rng, const std::string& label,
-                                              const std::string& trajectory_csv);
+                                              int trials, Rng& rng, const std::string& label);
 
 }  // namespace corrmp

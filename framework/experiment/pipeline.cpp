@@ -14,6 +14,7 @@
 #include "experiment/environment_evaluation.hpp"
 #include "experiment/offline_evaluation.hpp"
 #include "experiment/provenance.hpp"
+#include "experiment/trajectory_outputs.hpp"
 #include "store/result_store.hpp"
 
 namespace corrmp {
@@ -135,7 +136,11 @@ void run_stages(Experiment& experiment, const fs::path& dir, const fs::path& cac
     EnvironmentEvaluation evaluation = evaluate_in_environment(
         *experiment.environment, *experiment.demonstrations, experiment.context_extractor.get(),
         *experiment.policy, experiment.config.evaluation.trials, evaluation_rng,
-        experiment.config.experiment.name, write ? (dir / "trajectories.csv").string() : "");
+        experiment.config.experiment.name);
+    if (write) {
+      write_trajectory_csv(evaluation.trajectories, (dir / "trajectories.csv").string());
+      write_trajectory_figure(evaluation.trajectories, (dir / "trajectories.png").string());
+    }
     trials = std::move(evaluation.trials);
     metrics.insert(metrics.end(), evaluation.metrics.begin(), evaluation.metrics.end());
     std::ofstream(dir / "tables.txt") << evaluation.tables;

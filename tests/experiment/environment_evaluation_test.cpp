@@ -67,7 +67,7 @@ TEST(EnvironmentEvaluation, AWholeSkillPolicyIsCutAtTheReferencesCriticalPoints)
   Rng rng(11);
   const int trials = 4;
   const EnvironmentEvaluation result =
-      evaluate_in_environment(environment, expert, nullptr, policy, trials, rng, "replay", "");
+      evaluate_in_environment(environment, expert, nullptr, policy, trials, rng, "replay");
   ASSERT_EQ(result.trials.size(), 4u);
   for (const TrialRecord& trial : result.trials) {
     EXPECT_TRUE(trial.success) << trial.scenario << ": " << trial.failure;

@@ -1,0 +1,65 @@
+// Drawing helpers for run figures (plot_canvas.hpp).
+#include "plot/plot_canvas.hpp"
+
+#include <fmt/format.h>
+
+#include <algorithm>
+#include <cmath>
+#include <opencv2/imgcodecs.hpp>
+#include <opencv2/imgproc.hpp>
+#include <stdexcept>
+
+namespace corrmp {
+
+void write_png(const cv::Mat& canvas, const std::string& path, const char* where) {
+  bool ok = false;
+  try {
+    ok = cv::imwrite(path, canvas);
+  } catch (const cv::Exception& e) {
+    throw std::runtime_error(fmt::format("{}: cannot write '{}': {}", where, path, e.what()));
+  }
+  if (!ok) throw std::runtime_error(fmt::format("{}: cannot write '{}'", where, path));
+}
+
+void put_text(cv::Mat& canvas, const std::string& text, cv::Point origin, double scale,
+              const cv::Scalar& colour) {
+  cv::putText(canvas, text, origin, cv::FONT_HERSHEY_SIMPLEX, scale, colour, 1, cv::LINE_AA);
+}
+
+std::pair<double, double> padded_range(double lo, double hi) {
+  if (hi > lo) return {lo, hi};
+  const double pad = std::max(1e-9, std::abs(lo) * 0.05 + 0.5);
+  return {lo - pad, hi + pad};
+}
+
+std::string tick_label(double value) { return fmt::format("{:.3g}", value); }
+
+cv::Point PlotPanel::to_pixel(double x, double y) const {
+  const double u = (x - x_min) / (x_max - x_min);
+  const double v = (y - y_min) / (y_max - y_min);
+  return {pixels.x + static_cast<int>(std::lround(u * pixels.width)),
+          pixels.y + pixels.height - static_cast<int>(std::lround(v * pixels.height))};
+}
+
+void PlotPanel::draw_frame(cv::Mat& canvas, const std::string& title,
+                           const std::string& x_label) const {
+  const cv::Point top_left = pixels.tl();
+  const cv::Point bottom_right = pixels.br();
+  cv::rectangle(canvas, top_left, bottom_right, kPlotBlack, 1);
+  put_text(canvas, title,
+           {top_left.x + pixels.width / 2 - 3 * static_cast<int>(title.size()), top_left.y - 8},
+           0.45);
+  cv::line(canvas, {top_left.x - 4, top_left.y}, top_left, kPlotBlack);
+  cv::line(canvas, {top_left.x - 4, bottom_right.y}, {top_left.x, bottom_right.y}, kPlotBlack);
+  cv::line(canvas, {top_left.x, bottom_right.y}, {top_left.x, bottom_right.y + 4}, kPlotBlack);
+  cv::line(canvas, bottom_right, {bottom_right.x, bottom_right.y + 4}, kPlotBlack);
+  put_text(canvas, tick_label(y_max), {top_left.x - 50, top_left.y + 4});
+  put_text(canvas, tick_label(y_min), {top_left.x - 50, bottom_right.y + 4});
+  put_text(canvas, tick_label(x_min), {top_left.x - 8, bottom_right.y + 16});
+  put_text(canvas, tick_label(x_max), {bottom_right.x - 24, bottom_right.y + 16});
+  put_text(
+      canvas, x_label,
+      {top_left.x + pixels.width / 2 - 3 * static_cast<int>(x_label.size()), bottom_right.y + 32});
+}
+
+}  // namespace corrmp
