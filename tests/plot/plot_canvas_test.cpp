@@ -1,0 +1,44 @@
+// Tests of the drawing helpers: data-to-pixel mapping, ranges, labels and
+// PNG errors.
+#include "plot/plot_canvas.hpp"
+
+#include <gtest/gtest.h>
+
+#include <stdexcept>
+
+namespace corrmp {
+namespace {
+
+TEST(PlotCanvas, PanelsMapDataToPixelsWithYUp) {
+  const PlotPanel panel{cv::Rect(10, 20, 100, 50), -1.0, 1.0, 0.0, 5.0};
+  EXPECT_EQ(panel.to_pixel(-1.0, 0.0), cv::Point(10, 70));  // bottom left
+  EXPECT_EQ(panel.to_pixel(1.0, 5.0), cv::Point(110, 20));  // top right
+  EXPECT_EQ(panel.to_pixel(0.0, 2.5), cv::Point(60, 45));
+}
+
+TEST(PlotCanvas, RangesAreNeverEmptyAndLabelsShort) {
+  EXPECT_EQ(padded_range(1.0, 2.0), std::make_pair(1.0, 2.0));
+  const auto [lo, hi] = padded_range(3.0, 3.0);
+  EXPECT_LT(lo, 3.0);
+  EXPECT_GT(hi, 3.0);
+  EXPECT_EQ(tick_label(0.123456), "0.123");
+  EXPECT_EQ(tick_label(-2500.0), "-2.5e+03");
+}
+
+TEST(PlotCanvas, FramesAreDrawnAndUnwritablePathsNamed) {
+  cv::Mat canvas(120, 200, CV_8UC3, kPlotWhite);
+  const PlotPanel panel{cv::Rect(60, 30, 100, 50), 0.0, 1.0, 0.0, 1.0};
+  panel.draw_frame(canvas, "t", "x");
+  EXPECT_EQ(canvas.at<cv::Vec3b>(30, 110), cv::Vec3b(0, 0, 0));        // top edge
+  EXPECT_EQ(canvas.at<cv::Vec3b>(55, 110), cv::Vec3b(255, 255, 255));  // inside
+  try {
+    write_png(canvas, "/nonexistent-dir/x.png", "here");
+    ADD_FAILURE() << "no error";
+  } catch (const std::runtime_error& e) {
+    EXPECT_EQ(std::string(e.what()).rfind("here: cannot write '/nonexistent-dir/x.png'", 0), 0u)
+        << e.what();
+  }
+}
+
+}  // namespace
+}  // namespace corrmp
