@@ -5,6 +5,7 @@
 #pragma once
 
 #include <Eigen/Core>
+#include <limits>
 #include <memory>
 #include <string>
 #include <vector>
@@ -24,9 +25,10 @@ struct SegmentTrajectory {
   Eigen::VectorXd context;  // the segment's context vector; may be empty
   Observation start;        // what was observed at the segment's start (critical point)
   // The segment's span in the whole skill's normalised time (its critical
-  // points in a monolithic recording of the same demonstration).
-  double phase_begin = 0.0;
-  double phase_end = 1.0;
+  // points in a monolithic recording of the same demonstration); NaN where
+  // the source does not know it.
+  double phase_begin = std::numeric_limits<double>::quiet_NaN();
+  double phase_end = std::numeric_limits<double>::quiet_NaN();
 };
 
 struct Demonstration {

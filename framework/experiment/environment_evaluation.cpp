@@ -5,6 +5,7 @@
 #include <spdlog/spdlog.h>
 
 #include <algorithm>
+#include <cmath>
 #include <map>
 
 #include "cnmp/cnmp_trainer.hpp"
@@ -31,6 +32,12 @@ void split_at_reference_phases(Policy& policy, const std::string& whole,
   for (const auto& s : segments) {
     const SegmentTrajectory* demonstrated = reference.find(s.name);
     if (demonstrated == nullptr) continue;
+    if (!std::isfinite(demonstrated->phase_begin) || !std::isfinite(demonstrated->phase_end)) {
+      throw std::runtime_error(fmt::format(
+          "the reference demonstration's segment '{}' has no span in the whole skill, so the "
+          "whole-skill policy '{}' cannot be cut into segments",
+          s.name, whole));
+    }
     const Eigen::MatrixXd query =
         Eigen::VectorXd::LinSpaced(s.points, demonstrated->phase_begin, demonstrated->phase_end);
     out[s.name] = policy.generate(whole, start, context, query).mean;

@@ -61,7 +61,7 @@ std::string demonstrations_key(const Experiment& experiment) {
   const auto& config = experiment.config;
   if (!experiment.environment) return "";
   const std::string text =
-      fmt::format("v3 seed {}\n{}{}", config.seed, config.environment->node->to_yaml_string(),
+      fmt::format("v4 seed {}\n{}{}", config.seed, config.environment->node->to_yaml_string(),
                   config.demonstrations->node->to_yaml_string());
   return fmt::format("{:016x}", fnv1a64(text));
 }
@@ -137,14 +137,20 @@ void run_stages(Experiment& experiment, const fs::path& dir, const fs::path& cac
         *experiment.environment, *experiment.demonstrations, experiment.context_extractor.get(),
         *experiment.policy, experiment.config.evaluation.trials, evaluation_rng,
         experiment.config.experiment.name);
-    if (write) {
-      write_trajectory_csv(evaluation.trajectories, (dir / "trajectories.csv").string());
-      write_trajectory_figure(evaluation.trajectories, (dir / "trajectories.png").string());
-    }
     trials = std::move(evaluation.trials);
     metrics.insert(metrics.end(), evaluation.metrics.begin(), evaluation.metrics.end());
     std::ofstream(dir / "tables.txt") << evaluation.tables;
     fmt::print("{}", evaluation.tables);
+    // The trial files are for plotting: a failure to write them is reported,
+    // and the measured trials are still recorded.
+    if (write) {
+      try {
+        write_trajectory_csv(evaluation.trajectories, (dir / "trajectories.csv").string());
+        write_trajectory_figure(evaluation.trajectories, (dir / "trajectories.png").string());
+      } catch (const std::exception& e) {
+        spdlog::warn("trajectory files not written: {}", e.what());
+      }
+    }
     return;
   }
   const std::string csv_dir = write ? (dir / "predictions").string() : "";

@@ -1,4 +1,4 @@
-// Reports over recorded runs.
+// Run tables in Markdown and CSV (run_report.hpp).
 #include "experiment/run_report.hpp"
 
 #include <fmt/format.h>
@@ -6,61 +6,10 @@
 
 #include <algorithm>
 #include <cmath>
-#include <set>
 
 namespace corrmp {
 
 namespace {
-
-// One prepared statement, finalised on scope exit.
-class Statement {
- public:
-  Statement(sqlite3* db, const std::string& sql) {
-    if (sqlite3_prepare_v2(db, sql.c_str(), -1, &stmt_, nullptr) != SQLITE_OK) {
-      throw StoreError(fmt::format("report query failed: {}", sqlite3_errmsg(db)));
-    }
-  }
-  ~Statement() { sqlite3_finalize(stmt_); }
-  Statement(const Statement&) = delete;
-  Statement& operator=(const Statement&) = delete;
-  bool next() { return sqlite3_step(stmt_) == SQLITE_ROW; }
-  void bind(int index, int64_t value) { sqlite3_bind_int64(stmt_, index, value); }
-  int64_t integer(int column) { return sqlite3_column_int64(stmt_, column); }
-  double real(int column) { return sqlite3_column_double(stmt_, column); }
-  std::string text(int column) {
-    const auto* p = sqlite3_column_text(stmt_, column);
-    return p ? reinterpret_cast<const char*>(p) : "";
-  }
-
- private:
-  sqlite3_stmt* stmt_ = nullptr;
-};
-
-void flatten(const YAML::Node& node, const std::string& path,
-             std::map<std::string, std::string>& out) {
-  if (node.IsMap()) {
-    for (const auto& entry : node) {
-      const std::string key = entry.first.as<std::string>();
-      flatten(entry.second, path.empty() ? key : path + "." + key, out);
-    }
-  } else if (node.IsSequence()) {
-    const bool of_scalars = std::all_of(node.begin(), node.end(),
-                                        [](const YAML::Node& item) { return item.IsScalar(); });
-    if (of_scalars) {
-      std::string text;
-      for (const auto& item : node) text += (text.empty() ? "" : ", ") + item.as<std::string>();
-      out[path] = "[" + text + "]";
-    } else {
-      for (size_t i = 0; i < node.size(); ++i) {
-        flatten(node[i], fmt::format("{}.{}", path, i), out);
-      }
-    }
-  } else if (node.IsScalar()) {
-    out[path] = node.as<std::string>();
-  } else {
-    out[path] = "";
-  }
-}
 
 const double* metric(const RunSummary& run, const std::string& name) {
   const auto it = run.metrics.find(name);
@@ -132,6 +81,13 @@ std::vector<PaperRow> paper_rows(const std::string& tables_path) {
   return rows;
 }
 
+// Text inside a Markdown table cell: a '|' would end the cell.
+std::string markdown_cell(const std::string& text) {
+  std::string escaped;
+  for (char c : text) escaped += c == '|' ? std::string("\\|") : std::string(1, c);
+  return escaped;
+}
+
 std::string csv_cell(const std::string& text) {
   if (text.find_first_of(",\"\n") == std::string::npos) return text;
   std::string quoted = "\"";
@@ -140,77 +96,6 @@ std::string csv_cell(const std::string& text) {
 }
 
 }  // namespace
-
-std::map<std::string, std::string> flatten_yaml(const std::string& yaml) {
-  std::map<std::string, std::string> out;
-  flatten(YAML::Load(yaml), "", out);
-  return out;
-}
-
-std::vector<RunSummary> load_run_summaries(ResultStore& store, const ReportQuery& query) {
-  std::string where = query.completed_only ? "WHERE status = 'completed'" : "WHERE 1";
-  if (!query.experiments.empty()) {
-    std::string names;
-    for (const auto& e : query.experiments) {
-      std::string escaped;
-      for (char c : e) escaped += c == '\'' ? std::string("''") : std::string(1, c);
-      names += (names.empty() ? "'" : ", '") + escaped + "'";
-    }
-    where += " AND experiment IN (" + names + ")";
-  }
-  if (!query.runs.empty()) {
-    std::string ids;
-    for (int64_t id : query.runs) ids += (ids.empty() ? "" : ", ") + std::to_string(id);
-    where += " AND id IN (" + ids + ")";
-  }
-  std::string sql = "SELECT id, experiment, status, config FROM runs " + where + " ORDER BY id";
-  if (query.last > 0) {
-    sql = fmt::format("SELECT * FROM ({} DESC LIMIT {}) ORDER BY id", sql, query.last);
-  }
-  std::vector<RunSummary> runs;
-  {
-    Statement select(store.handle(), sql);
-    while (select.next()) {
-      RunSummary run;
-      run.id = select.integer(0);
-      run.experiment = select.text(1);
-      run.status = select.text(2);
-      run.settings = flatten_yaml(select.text(3));
-      runs.push_back(std::move(run));
-    }
-  }
-  for (RunSummary& run : runs) {
-    Statement metrics(store.handle(), "SELECT name, value FROM metrics WHERE run_id = ?");
-    metrics.bind(1, run.id);
-    while (metrics.next()) run.metrics[metrics.text(0)] = metrics.real(1);
-    Statement trials(store.handle(), "SELECT COUNT(*) FROM trials WHERE run_id = ?");
-    trials.bind(1, run.id);
-    if (trials.next()) run.trials = static_cast<int>(trials.integer(0));
-  }
-  return runs;
-}
-
-std::map<std::string, std::vector<std::string>> varying_settings(
-    const std::vector<RunSummary>& runs) {
-  std::map<std::string, std::vector<const RunSummary*>> by_experiment;
-  for (const auto& run : runs) by_experiment[run.experiment].push_back(&run);
-  std::map<std::string, std::vector<std::string>> varying;
-  for (const auto& [experiment, group] : by_experiment) {
-    std::set<std::string> keys;
-    for (const auto* run : group) {
-      for (const auto& entry : run->settings) keys.insert(entry.first);
-    }
-    for (const auto& key : keys) {
-      std::set<std::string> values;
-      for (const auto* run : group) {
-        const auto it = run->settings.find(key);
-        values.insert(it == run->settings.end() ? "\x01unset" : it->second);
-      }
-      if (values.size() > 1) varying[experiment].push_back(key);
-    }
-  }
-  return varying;
-}
 
 std::string report_markdown(const std::vector<RunSummary>& runs, const ReportFormat& format) {
   const auto varying = varying_settings(runs);
@@ -224,10 +109,10 @@ std::string report_markdown(const std::vector<RunSummary>& runs, const ReportFor
   }
   out += "\n" + rule + "\n";
   for (const auto& run : runs) {
-    out += fmt::format("| {} | {} | {} | {} | {} | {} | {} |", run.id, run.experiment,
-                       varies_text(run, varying), success_text(run),
-                       percent_text(metric(run, "decision_match_rate")), pair_text(run, "cor_mp"),
-                       pair_text(run, "post_mp"));
+    out += fmt::format("| {} | {} | {} | {} | {} | {} | {} |", run.id,
+                       markdown_cell(run.experiment), markdown_cell(varies_text(run, varying)),
+                       success_text(run), percent_text(metric(run, "decision_match_rate")),
+                       pair_text(run, "cor_mp"), pair_text(run, "post_mp"));
     for (const auto& name : format.extra_metrics) {
       out += " " + number(metric(run, name), "{:.4g}") + " |";
     }

@@ -27,6 +27,7 @@ cv::Scalar segment_colour(const std::string& segment) {
 
 void draw_path(cv::Mat& canvas, const PlotPanel& panel, const Eigen::MatrixXd& path,
                const cv::Scalar& colour, int thickness) {
+  if (!path.allFinite()) return;  // a failed generation; its trial is framed red
   for (Eigen::Index t = 1; t < path.rows(); ++t) {
     cv::line(canvas, panel.to_pixel(path(t - 1, 1), path(t - 1, 0)),
              panel.to_pixel(path(t, 1), path(t, 0)), colour, thickness, cv::LINE_AA);

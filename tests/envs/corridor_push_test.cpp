@@ -120,6 +120,26 @@ TEST(CorridorExpert, TempoMovesTheCriticalPointsInTimeButNotThePath) {
   }
 }
 
+// A sweep over the tempo variation compares the same scenarios.
+TEST(CorridorExpert, TheScenariosCollectedDoNotDependOnTheTempoVariation) {
+  CorridorPush env{CorridorPushParams{}};
+  std::vector<std::vector<std::string>> scenarios;
+  for (double variation : {0.0, 0.3}) {
+    CorridorExpertParams params;
+    params.train = 3;
+    params.validation = 1;
+    params.tempo_variation = variation;
+    Rng rng(7);
+    const DemonstrationSplit split = CorridorExpert{params}.collect(&env, rng);
+    scenarios.emplace_back();
+    for (const auto* set : {&split.train, &split.validation}) {
+      for (const auto& demo : *set) scenarios.back().push_back(demo.scenario);
+    }
+  }
+  ASSERT_EQ(scenarios[0].size(), 4u);
+  EXPECT_EQ(scenarios[0], scenarios[1]);
+}
+
 TEST(PathSampling, KeepsEveryWaypointAndSpacesPointsEvenly) {
   const std::vector<Eigen::Vector3d> waypoints{{0, 0, 0}, {0.1, 0, 0}, {0.1, 0.1, 0}};
   const Eigen::MatrixXd path = sample_path(waypoints, 21);

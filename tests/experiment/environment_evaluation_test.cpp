@@ -82,6 +82,22 @@ TEST(EnvironmentEvaluation, AWholeSkillPolicyIsCutAtTheReferencesCriticalPoints)
   // point counts would be 0.5-0.9 cm off).
   EXPECT_LT(metrics.at("cor_mp_error_max_cm"), 0.1);
   EXPECT_LT(metrics.at("post_mp_error_max_cm"), 0.1);
+  // Each trial's trajectories are returned for the files: the policy's
+  // segments beside the expert's, point for point.
+  ASSERT_EQ(result.trajectories.size(), 4u);
+  for (int t = 0; t < trials; ++t) {
+    const TrialTrajectories& paths = result.trajectories[t];
+    EXPECT_EQ(paths.trial, t);
+    EXPECT_TRUE(paths.success);
+    EXPECT_EQ(paths.chosen_action, result.trials[t].chosen_action);
+    for (const char* segment : {"pre", "cor", "post"}) {
+      ASSERT_EQ(paths.generated.count(segment), 1u) << segment;
+      EXPECT_EQ(paths.generated.at(segment).rows(), paths.expert.at(segment).rows());
+      EXPECT_LT((paths.generated.at(segment) - paths.expert.at(segment)).cwiseAbs().maxCoeff(),
+                0.005)
+          << segment;
+    }
+  }
   EXPECT_NE(result.tables.find("Table I (replay): 4 of 4 trials succeeded"), std::string::npos)
       << result.tables;
 }

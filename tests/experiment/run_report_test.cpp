@@ -47,17 +47,18 @@ TEST(RunReport, TabulatesRunsWithTheSettingsTheyVary) {
   ResultStore store(dir.file("r.sqlite"));
   add_run(store, "sweep", "seed: 0\nevaluation: {seed: 1, trials: 4}\n", 1.0, 0.2);
   add_run(store, "sweep", "seed: 0\nevaluation: {seed: 2, trials: 4}\n", 0.5, 0.4);
-  add_run(store, "other", "seed: 0\n", 0.25, 0.1);
+  add_run(store, "other", "seed: 0\nnote: a\n", 0.25, 0.1);
+  add_run(store, "other", "seed: 0\nnote: a|b\n", 0.25, 0.1);
   const int64_t failed = store.begin_run({"sweep", "seed: 9\n", "hash", 0, "", false, ""});
   store.end_run(failed, "failed", "for the test");
 
   const auto runs = load_run_summaries(store, {});
-  ASSERT_EQ(runs.size(), 3u);
+  ASSERT_EQ(runs.size(), 4u);
   EXPECT_EQ(runs[0].trials, 4);
   EXPECT_EQ(runs[1].metrics.at("task_success_rate"), 0.5);
   const auto varying = varying_settings(runs);
   EXPECT_EQ(varying.at("sweep"), std::vector<std::string>{"evaluation.seed"});
-  EXPECT_EQ(varying.count("other"), 0u);
+  EXPECT_EQ(varying.at("other"), std::vector<std::string>{"note"});
 
   ReportFormat format;
   format.extra_metrics = {"demonstrations_train", "missing"};
@@ -69,7 +70,8 @@ TEST(RunReport, TabulatesRunsWithTheSettingsTheyVary) {
   EXPECT_NE(markdown.find("| 2 | sweep | evaluation.seed=2 | 2 of 4 | 75% | 0.40 / 0.80 | - |"),
             std::string::npos)
       << markdown;
-  EXPECT_NE(markdown.find("| 3 | other |  | 1 of 4 |"), std::string::npos) << markdown;
+  EXPECT_NE(markdown.find("| 3 | other | note=a | 1 of 4 |"), std::string::npos) << markdown;
+  EXPECT_NE(markdown.find("| 4 | other | note=a\\|b | 1 of 4 |"), std::string::npos) << markdown;
 
   const std::string csv = report_csv(runs, {});
   EXPECT_EQ(csv.substr(0, csv.find('\n')),
@@ -90,7 +92,7 @@ TEST(RunReport, TabulatesRunsWithTheSettingsTheyVary) {
   ASSERT_EQ(newest.size(), 1u);
   EXPECT_EQ(newest[0].id, failed);
   ReportQuery by_id;
-  by_id.runs = {3, 1};
+  by_id.runs = {3, 1};  // any order given; oldest first returned
   const auto picked = load_run_summaries(store, by_id);
   ASSERT_EQ(picked.size(), 2u);
   EXPECT_EQ(picked[0].id, 1);

@@ -140,12 +140,16 @@ Demonstration CorridorExpert::demonstrate(Environment& environment, const Scenar
     demo.segments[i].phase_end = duration > 0 ? elapsed / duration : 1.0;
   }
   demo.segments.push_back(segment_of("full", full, initial));
+  demo.segments.back().phase_begin = 0.0;
+  demo.segments.back().phase_end = 1.0;
   return demo;
 }
 
+// Drawn whatever the variation (exactly 1 at 0), so the scenarios collected
+// never depend on it and a sweep over it compares the same scenarios.
 double CorridorExpert::tempo_factor(Rng& rng) const {
   const double v = params_.tempo_variation;
-  return v > 0 ? rng.uniform(1.0 - v, 1.0 + v) : 1.0;
+  return rng.uniform(1.0 - v, 1.0 + v);
 }
 
 DemonstrationSplit CorridorExpert::collect(Environment* environment, Rng& rng) {

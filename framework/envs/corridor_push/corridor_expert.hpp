@@ -8,9 +8,11 @@
 // the gripper's x, y, z of every segment, the observations at the segment
 // starts (with head-camera images when asked) and the decision, plus the whole
 // skill as one recording at a fixed rate (the monolithic baseline's data).
-// Like a human's, the expert's tempo varies from stroke to stroke, so the
-// critical points fall at different times of the whole recording; each
-// segment is normalised in time between its own critical points.
+// Like a human's, the expert's tempo varies from stroke to stroke (each
+// straight move between waypoints), so the critical points fall at different
+// times of the whole recording. Each segment is normalised in time between its
+// own critical points: its ends are aligned across demonstrations, while the
+// timing inside it still varies.
 #pragma once
 
 #include <string>
