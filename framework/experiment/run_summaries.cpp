@@ -7,40 +7,18 @@
 #include <algorithm>
 #include <set>
 
+#include "store/statement.hpp"
+
 namespace corrmp {
 
 namespace {
 
-// One prepared statement, finalised on scope exit.
-class Statement {
- public:
-  Statement(sqlite3* db, const std::string& sql) : db_(db) {
-    if (sqlite3_prepare_v2(db, sql.c_str(), -1, &stmt_, nullptr) != SQLITE_OK) {
-      throw StoreError(fmt::format("report query failed: {}", sqlite3_errmsg(db)));
-    }
-  }
-  ~Statement() { sqlite3_finalize(stmt_); }
-  Statement(const Statement&) = delete;
-  Statement& operator=(const Statement&) = delete;
-  // True for a row, false when done; any other outcome is an error.
-  bool next() {
-    const int rc = sqlite3_step(stmt_);
-    if (rc == SQLITE_ROW) return true;
-    if (rc == SQLITE_DONE) return false;
-    throw StoreError(fmt::format("report query failed: {}", sqlite3_errmsg(db_)));
-  }
-  void bind(int index, int64_t value) { sqlite3_bind_int64(stmt_, index, value); }
-  int64_t integer(int column) { return sqlite3_column_int64(stmt_, column); }
-  double real(int column) { return sqlite3_column_double(stmt_, column); }
-  std::string text(int column) {
-    const auto* p = sqlite3_column_text(stmt_, column);
-    return p ? reinterpret_cast<const char*>(p) : "";
-  }
-
- private:
-  sqlite3* db_;
-  sqlite3_stmt* stmt_ = nullptr;
-};
+// "?, ?, ?" for `count` bound parameters.
+std::string placeholders(size_t count) {
+  std::string text;
+  for (size_t i = 0; i < count; ++i) text += i == 0 ? "?" : ", ?";
+  return text;
+}
 
 void flatten(const YAML::Node& node, const std::string& path,
              std::map<std::string, std::string>& out) {
@@ -79,42 +57,36 @@ std::map<std::string, std::string> flatten_yaml(const std::string& yaml) {
 std::vector<RunSummary> load_run_summaries(ResultStore& store, const ReportQuery& query) {
   std::string where = query.completed_only ? "WHERE status = 'completed'" : "WHERE 1";
   if (!query.experiments.empty()) {
-    std::string names;
-    for (const auto& e : query.experiments) {
-      std::string escaped;
-      for (char c : e) escaped += c == '\'' ? std::string("''") : std::string(1, c);
-      names += (names.empty() ? "'" : ", '") + escaped + "'";
-    }
-    where += " AND experiment IN (" + names + ")";
+    where += " AND experiment IN (" + placeholders(query.experiments.size()) + ")";
   }
-  if (!query.runs.empty()) {
-    std::string ids;
-    for (int64_t id : query.runs) ids += (ids.empty() ? "" : ", ") + std::to_string(id);
-    where += " AND id IN (" + ids + ")";
-  }
+  if (!query.runs.empty()) where += " AND id IN (" + placeholders(query.runs.size()) + ")";
   std::string sql = "SELECT id, experiment, status, config FROM runs " + where + " ORDER BY id";
-  if (query.last > 0) {
-    sql = fmt::format("SELECT * FROM ({} DESC LIMIT {}) ORDER BY id", sql, query.last);
-  }
+  if (query.last > 0) sql = "SELECT * FROM (" + sql + " DESC LIMIT ?) ORDER BY id";
+
+  Statement select(store.handle(), sql);
+  int parameter = 0;
+  for (const auto& experiment : query.experiments) select.bind(++parameter, experiment);
+  for (int64_t id : query.runs) select.bind(++parameter, id);
+  if (query.last > 0) select.bind(++parameter, static_cast<int64_t>(query.last));
   std::vector<RunSummary> runs;
-  {
-    Statement select(store.handle(), sql);
-    while (select.next()) {
-      RunSummary run;
-      run.id = select.integer(0);
-      run.experiment = select.text(1);
-      run.status = select.text(2);
-      run.settings = flatten_yaml(select.text(3));
-      runs.push_back(std::move(run));
-    }
+  while (select.step()) {
+    RunSummary run;
+    run.id = select.column_int(0);
+    run.experiment = select.column_text(1);
+    run.status = select.column_text(2);
+    run.settings = flatten_yaml(select.column_text(3));
+    runs.push_back(std::move(run));
   }
+
+  Statement metrics(store.handle(), "SELECT name, value FROM metrics WHERE run_id = ?");
+  Statement trials(store.handle(), "SELECT COUNT(*) FROM trials WHERE run_id = ?");
   for (RunSummary& run : runs) {
-    Statement metrics(store.handle(), "SELECT name, value FROM metrics WHERE run_id = ?");
     metrics.bind(1, run.id);
-    while (metrics.next()) run.metrics[metrics.text(0)] = metrics.real(1);
-    Statement trials(store.handle(), "SELECT COUNT(*) FROM trials WHERE run_id = ?");
+    while (metrics.step()) run.metrics[metrics.column_text(0)] = metrics.column_double(1);
+    metrics.reset();
     trials.bind(1, run.id);
-    if (trials.next()) run.trials = static_cast<int>(trials.integer(0));
+    if (trials.step()) run.trials = static_cast<int>(trials.column_int(0));
+    trials.reset();
   }
   return runs;
 }

@@ -27,6 +27,7 @@ class Statement {
   void reset();
 
   int64_t column_int(int index) const;
+  double column_double(int index) const;
   std::string column_text(int index) const;
 
  private:
