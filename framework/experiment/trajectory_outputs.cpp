@@ -80,15 +80,13 @@ void write_trajectory_figure(const std::vector<TrialTrajectories>& trials,
            "top view, x (m) up against y (m) right; grey: expert; generated pre blue, cor orange, "
            "post green",
            {8, 20}, 0.45);
-  constexpr int kLeft = 52, kRight = 12, kTop = 24, kBottom = 40;
   for (int i = 0; i < count; ++i) {
     const TrialTrajectories& trial = trials[i];
     const cv::Point origin((i % kTrajectoryColumns) * kTrajectoryPanelWidth,
                            kTrajectoryHeader + (i / kTrajectoryColumns) * kTrajectoryPanelHeight);
     const PlotPanel panel{
-        cv::Rect(origin.x + kLeft, origin.y + kTop, kTrajectoryPanelWidth - kLeft - kRight,
-                 kTrajectoryPanelHeight - kTop - kBottom),
-        y_min, y_max, x_min, x_max};
+        plot_area_in({origin.x, origin.y, kTrajectoryPanelWidth, kTrajectoryPanelHeight}), y_min,
+        y_max, x_min, x_max};
     const std::string chosen = trial.chosen_action.empty() ? "?" : trial.chosen_action;
     const std::string expected = trial.expected_action.empty() ? "?" : trial.expected_action;
     panel.draw_frame(canvas,

@@ -34,6 +34,11 @@ std::pair<double, double> padded_range(double lo, double hi) {
 
 std::string tick_label(double value) { return fmt::format("{:.3g}", value); }
 
+cv::Rect plot_area_in(const cv::Rect& cell) {
+  constexpr int kLeft = 52, kRight = 12, kTop = 24, kBottom = 40;
+  return {cell.x + kLeft, cell.y + kTop, cell.width - kLeft - kRight, cell.height - kTop - kBottom};
+}
+
 cv::Point PlotPanel::to_pixel(double x, double y) const {
   const double u = (x - x_min) / (x_max - x_min);
   const double v = (y - y_min) / (y_max - y_min);

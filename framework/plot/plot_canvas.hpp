@@ -35,9 +35,12 @@ struct PlotPanel {
 
   cv::Point to_pixel(double x, double y) const;
   // The frame, the end ticks with their labels, the title above and the x
-  // label below; the panel's surroundings need about 50 px left, 24 above and
-  // 40 below for them.
+  // label below, drawn in the margins plot_area_in leaves.
   void draw_frame(cv::Mat& canvas, const std::string& title, const std::string& x_label) const;
 };
+
+// The plot area of a figure cell: the cell less the margins draw_frame's
+// labels need (52 px left, 12 right, 24 above, 40 below).
+cv::Rect plot_area_in(const cv::Rect& cell);
 
 }  // namespace corrmp

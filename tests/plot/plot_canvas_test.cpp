@@ -16,6 +16,10 @@ TEST(PlotCanvas, PanelsMapDataToPixelsWithYUp) {
   EXPECT_EQ(panel.to_pixel(0.0, 2.5), cv::Point(60, 45));
 }
 
+TEST(PlotCanvas, PlotAreasLeaveTheLabelMargins) {
+  EXPECT_EQ(plot_area_in(cv::Rect(100, 30, 300, 220)), cv::Rect(152, 54, 236, 156));
+}
+
 TEST(PlotCanvas, RangesAreNeverEmptyAndLabelsShort) {
   EXPECT_EQ(padded_range(1.0, 2.0), std::make_pair(1.0, 2.0));
   const auto [lo, hi] = padded_range(3.0, 3.0);

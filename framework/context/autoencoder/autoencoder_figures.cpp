@@ -71,14 +71,11 @@ void write_latent_plot(const std::vector<double>& x_values, const Eigen::MatrixX
 
   const auto [x_min, x_max] = padded_range(*std::min_element(x_values.begin(), x_values.end()),
                                            *std::max_element(x_values.begin(), x_values.end()));
-  // Plot area inside each panel: margins for the title, tick labels and x label.
-  constexpr int kLeft = 52, kRight = 12, kTop = 24, kBottom = 40;
   for (int k = 0; k < dims; ++k) {
     const cv::Point origin((k % kPlotColumns) * kPanelWidth, (k / kPlotColumns) * kPanelHeight);
     const auto [y_min, y_max] = padded_range(latents.col(k).minCoeff(), latents.col(k).maxCoeff());
-    const PlotPanel panel{cv::Rect(origin.x + kLeft, origin.y + kTop, kPanelWidth - kLeft - kRight,
-                                   kPanelHeight - kTop - kBottom),
-                          x_min, x_max, y_min, y_max};
+    const PlotPanel panel{plot_area_in({origin.x, origin.y, kPanelWidth, kPanelHeight}), x_min,
+                          x_max, y_min, y_max};
     panel.draw_frame(canvas, fmt::format("z{}", k), x_label);
     for (size_t i = 0; i < x_values.size(); ++i) {
       cv::circle(canvas, panel.to_pixel(x_values[i], latents(static_cast<Eigen::Index>(i), k)), 2,
