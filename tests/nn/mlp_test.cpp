@@ -15,13 +15,10 @@ namespace {
 
 using testing::MatD;
 
-TEST(MlpGrad, MatchesFiniteDifferences) {
-  Rng rng(50);
-  Mlp<double> mlp({3, 6, 5, 2}, rng);
-  // Run a larger batch first so the check also covers reused, larger-than-needed buffers.
-  mlp.forward(testing::random_matrix(9, 3, rng));
-  MatD x = testing::random_matrix(4, 3, rng);
-  const MatD r = testing::random_matrix(4, 2, rng);
+// Input and parameter gradients of a batch of `rows` against finite differences.
+void expect_mlp_gradients_match(Mlp<double>& mlp, int rows, int d_in, int d_out, Rng& rng) {
+  MatD x = testing::random_matrix(rows, d_in, rng);
+  const MatD r = testing::random_matrix(rows, d_out, rng);
   auto params = mlp.parameters();
   zero_grad(params);
   mlp.forward(x);
@@ -30,17 +27,18 @@ TEST(MlpGrad, MatchesFiniteDifferences) {
   testing::expect_gradients_match(loss, testing::cases_for("x", x, dx, params));
 }
 
+TEST(MlpGrad, MatchesFiniteDifferences) {
+  Rng rng(50);
+  Mlp<double> mlp({3, 6, 5, 2}, rng);
+  // Run a larger batch first so the check also covers reused, larger-than-needed buffers.
+  mlp.forward(testing::random_matrix(9, 3, rng));
+  expect_mlp_gradients_match(mlp, 4, 3, 2, rng);
+}
+
 TEST(MlpGrad, SingleLayerMatchesFiniteDifferences) {
   Rng rng(51);
   Mlp<double> mlp({4, 3}, rng);
-  MatD x = testing::random_matrix(2, 4, rng);
-  const MatD r = testing::random_matrix(2, 3, rng);
-  auto params = mlp.parameters();
-  zero_grad(params);
-  mlp.forward(x);
-  const MatD dx = mlp.backward(r);
-  auto loss = [&] { return testing::weighted_sum(mlp.forward(x), r); };
-  testing::expect_gradients_match(loss, testing::cases_for("x", x, dx, params));
+  expect_mlp_gradients_match(mlp, 2, 4, 3, rng);
 }
 
 TEST(MlpGrad, ParamsOnlyBackwardGivesSameParameterGradients) {
