@@ -1,6 +1,6 @@
 // Command-line parsing shared by the tools: --help prints and exits 0; a usage
-// error prints one line naming the tool and exits 2 (DESIGN.md, "Contract:
-// command line").
+// error prints one line naming the tool and exits 2 (docs/architecture.md,
+// "Command line").
 #pragma once
 
 #include <CLI/CLI.hpp>

@@ -2,7 +2,7 @@
 // experiment config, then runs the pipeline and records it in the result store.
 // Exit codes: 0 success; 2 usage or config error (nothing written to the
 // database); 1 runtime failure (the run is marked failed with its reason);
-// 130 interrupted. DESIGN.md, "Contract: command line".
+// 130 interrupted. docs/architecture.md, "Command line".
 #include <fmt/format.h>
 #include <spdlog/spdlog.h>
 #include <CLI/CLI.hpp>
@@ -44,11 +44,16 @@ int main(int argc, char** argv) {
   app.add_flag("--list", list, "list every registered component and its parameters");
   app.add_option("--db", options.db_path, "result database")->capture_default_str();
   app.add_option("--out", options.out_dir, "directory for run outputs")->capture_default_str();
+  bool no_cache = false;
+  app.add_flag("--no-cache", no_cache,
+               "collect demonstrations and fit context extractors afresh instead of reusing "
+               "<out>/cache (the fresh results still replace the cached ones)");
   app.add_flag("-q,--quiet", quiet, "only warnings and errors on stderr");
   app.footer(kExamples);
   if (const auto exit_code = corrmp::parse_command_line(app, argc, argv)) return *exit_code;
 
   corrmp::setup_logging(quiet);
+  options.use_cache = !no_cache;
   try {
     const corrmp::Registries registries = corrmp::builtin_registries();
     if (list) {

@@ -5,7 +5,7 @@
 #pragma once
 
 #include "core/config/field_rule.hpp"
-#include "envs/demonstrations.hpp"
+#include "data/demonstrations.hpp"
 
 namespace corrmp {
 
@@ -34,6 +34,8 @@ class CurveFamily : public DemonstrationSource {
  public:
   explicit CurveFamily(const CurveFamilyParams& params) : params_(params) {}
   DemonstrationSplit collect(Environment* environment, Rng& rng) override;
+  std::vector<std::string> segments() const override { return {"full"}; }
+  bool provides_contexts() const override { return true; }
   Demonstration make(double context, Rng& rng) const;
 
  private:

@@ -1,6 +1,8 @@
 // Registration of the cnmp module's components.
 #include "cnmp/register_builtin.hpp"
 
+#include <memory>
+
 #include "cnmp/curve_family.hpp"
 #include "cnmp/trajectory_files.hpp"
 
@@ -9,10 +11,14 @@ namespace corrmp {
 void register_builtin_cnmp(Registry<DemonstrationSource>& demonstrations) {
   demonstrations.add<CurveFamilyParams>(
       "curve_family", "synthetic 1-D curves parameterised by a context value (no simulation)",
-      [](const CurveFamilyParams& p, const BuildContext&) { return new CurveFamily(p); });
+      [](const CurveFamilyParams& p, const BuildContext&) {
+        return std::make_unique<CurveFamily>(p);
+      });
   demonstrations.add<TrajectoryFilesParams>(
       "trajectory_files", "recorded demonstrations from .npy ([N, T, D]) or CSV files",
-      [](const TrajectoryFilesParams& p, const BuildContext&) { return new TrajectoryFiles(p); });
+      [](const TrajectoryFilesParams& p, const BuildContext&) {
+        return std::make_unique<TrajectoryFiles>(p);
+      });
 }
 
 }  // namespace corrmp

@@ -3,7 +3,7 @@
 #pragma once
 
 #include "core/registry.hpp"
-#include "envs/demonstrations.hpp"
+#include "data/demonstrations.hpp"
 
 namespace corrmp {
 

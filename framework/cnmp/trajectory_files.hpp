@@ -8,7 +8,7 @@
 
 #include "cnmp/trajectory_dataset.hpp"
 #include "core/config/field_rule.hpp"
-#include "envs/demonstrations.hpp"
+#include "data/demonstrations.hpp"
 
 namespace corrmp {
 
@@ -38,6 +38,8 @@ class TrajectoryFiles : public DemonstrationSource {
  public:
   explicit TrajectoryFiles(const TrajectoryFilesParams& params) : params_(params) {}
   DemonstrationSplit collect(Environment* environment, Rng& rng) override;
+  std::vector<std::string> segments() const override { return {params_.segment}; }
+  bool provides_contexts() const override { return !params_.context_columns.empty(); }
 
  private:
   TrajectoryFilesParams params_;

@@ -67,10 +67,16 @@ void AutoencoderContext::fit(const std::vector<Demonstration>& demos, const Extr
       fnv1a64(fmt::format("v1 {} {} {}", seed_, cache.data_key, params_text(params_.network))));
   const std::string path =
       cache.directory.empty() ? "" : cache.directory + "/autoencoder-" + key + ".cmpm";
+  model_.reset();
   if (!path.empty() && std::filesystem::exists(path)) {
-    model_ = std::make_unique<ConvAutoencoder<float>>(load_autoencoder(path));
-    spdlog::info("reusing the trained autoencoder {}", path);
-  } else {
+    try {
+      model_ = std::make_unique<ConvAutoencoder<float>>(load_autoencoder(path));
+      spdlog::info("reusing the trained autoencoder {}", path);
+    } catch (const std::exception& e) {
+      spdlog::warn("{}; training the autoencoder again", e.what());
+    }
+  }
+  if (!model_) {
     nn::Rng init(seed_);
     model_ = std::make_unique<ConvAutoencoder<float>>(params_.network.architecture(), init);
     spdlog::info("training the autoencoder ({}) on {} images, {} held out",

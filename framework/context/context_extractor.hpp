@@ -9,8 +9,8 @@
 #include <vector>
 
 #include "core/seeds.hpp"
-#include "envs/demonstrations.hpp"
-#include "envs/observation.hpp"
+#include "data/demonstrations.hpp"
+#include "data/observation.hpp"
 
 namespace corrmp {
 
@@ -31,6 +31,8 @@ class ContextExtractor {
                    Rng& rng) = 0;
   // The context of `segment`; empty for segments that have none.
   virtual Eigen::VectorXd extract(const std::string& segment, const Observation& observation) = 0;
+  // The segments it gives a context for.
+  virtual std::vector<std::string> segments() const = 0;
   // Whether observations must include camera images.
   virtual bool needs_images() const = 0;
   // Writes what a researcher looks at (figures, models) into the run directory.

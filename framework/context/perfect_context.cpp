@@ -3,6 +3,12 @@
 
 namespace corrmp {
 
+std::vector<std::string> PerfectContext::segments() const {
+  std::vector<std::string> names;
+  for (const auto& spec : params_.segments) names.push_back(spec.segment);
+  return names;
+}
+
 Eigen::VectorXd PerfectContext::extract(const std::string& segment,
                                         const Observation& observation) {
   for (const auto& spec : params_.segments) {

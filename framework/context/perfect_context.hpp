@@ -37,6 +37,7 @@ class PerfectContext : public ContextExtractor {
   explicit PerfectContext(const PerfectContextParams& params) : params_(params) {}
   void fit(const std::vector<Demonstration>&, const ExtractorCache&, Rng&) override {}
   Eigen::VectorXd extract(const std::string& segment, const Observation& observation) override;
+  std::vector<std::string> segments() const override;
   bool needs_images() const override { return false; }
 
  private:

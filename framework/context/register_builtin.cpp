@@ -1,7 +1,10 @@
 // Registration of the context module's extractors.
 #include "context/register_builtin.hpp"
 
+#include <memory>
+
 #include "context/autoencoder_context.hpp"
+#include "context/color_segmentation_context.hpp"
 #include "context/perfect_context.hpp"
 
 namespace corrmp {
@@ -9,11 +12,21 @@ namespace corrmp {
 void register_builtin_contexts(Registry<ContextExtractor>& contexts) {
   contexts.add<PerfectContextParams>(
       "perfect", "named simulator state values (corridor x, object x, ...) as the context",
-      [](const PerfectContextParams& p, const BuildContext&) { return new PerfectContext(p); });
+      [](const PerfectContextParams& p, const BuildContext&) {
+        return std::make_unique<PerfectContext>(p);
+      });
   contexts.add<AutoencoderContextParams>(
       "autoencoder", "latent of a convolutional autoencoder of the head-camera image (paper III-B)",
       [](const AutoencoderContextParams& p, const BuildContext& context) {
-        return new AutoencoderContext(p, context.seeds.seed_for("context.init"));
+        return std::make_unique<AutoencoderContext>(p, context.seeds.seed_for("context.init"));
+      });
+  contexts.add<ColorSegmentationContextParams>(
+      "color_segmentation",
+      "the rope end found by colour segmentation of the RGB-D head camera, relative to the "
+      "gripper mid-point (paper IV-C)",
+      [](const ColorSegmentationContextParams& p, const BuildContext& context) {
+        return std::make_unique<ColorSegmentationContext>(p,
+                                                          context.seeds.seed_for("context.noise"));
       });
 }
 

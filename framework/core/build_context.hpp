@@ -1,5 +1,5 @@
 // What every component factory receives besides its own parameters: the seed
-// streams. DESIGN.md, "Core interfaces".
+// streams. docs/architecture.md, "Components".
 #pragma once
 
 #include "core/seeds.hpp"

@@ -2,7 +2,8 @@
 // policies). Filled by one explicit register_builtin_*() per module; static
 // self-registration is avoided because the linker drops it from static
 // libraries. Unknown name: a ConfigError listing the valid names. Duplicate
-// name: std::logic_error at start-up. DESIGN.md, "Core interfaces".
+// name: std::logic_error at start-up. A factory's std::invalid_argument
+// becomes a ConfigError at the component's section. docs/architecture.md, "Components".
 #pragma once
 
 #include <fmt/format.h>
@@ -34,8 +35,9 @@ class Registry {
   // `kind` names what this registry holds in messages ("environment").
   explicit Registry(std::string kind) : kind_(std::move(kind)) {}
 
-  // Registers `name`, built by make(const Params&, const BuildContext&) from a
-  // Params struct read strictly from the component's config section.
+  // Registers `name`, built by make(const Params&, const BuildContext&) (a
+  // std::unique_ptr to a Base) from a Params struct read strictly from the
+  // component's config section.
   template <class Params, class Make>
   void add(const std::string& name, const std::string& description, Make make) {
     if (find(name) != nullptr) {
@@ -49,7 +51,12 @@ class Registry {
                 reader.declare("type");
                 params.describe(reader);
                 reader.finish();
-                return std::unique_ptr<Base>(make(params, context));
+                try {
+                  return std::unique_ptr<Base>(make(params, context));
+                } catch (const std::invalid_argument& e) {
+                  // A component refusing its parameters is a config error too.
+                  throw ConfigError(node.where(), path, e.what());
+                }
               }});
   }
 

@@ -1,30 +1,73 @@
 // A simulated task cut into segments at its critical points (paper, Section
 // III): it draws scenarios, resets to one, executes segment trajectories of its
-// effector, reports observations at segment starts and the trial's outcome.
+// effectors, reports observations at segment starts and the trial's outcome.
+// A task also declares what it reports (TaskReport): the generic evaluation,
+// tables, database rows and figures loop over that and know no task by name
+// (docs/architecture.md, "Adding a task").
 #pragma once
 
 #include <Eigen/Core>
+#include <map>
 #include <string>
 #include <vector>
 
 #include "core/seeds.hpp"
-#include "envs/observation.hpp"
+#include "data/demonstrations.hpp"
+#include "data/evaluated_trial.hpp"
+#include "data/observation.hpp"
 
 namespace corrmp {
 
 struct SegmentInfo {
   std::string name;
   int points = 50;  // trajectory points of the segment in demonstrations
+  // Rows are offsets from the effectors' positions at the segment's start (a
+  // correction "relative to the gripper", paper Section IV-C), not positions.
+  bool relative = false;
 };
 
 struct Outcome {
   bool success = false;
-  std::string failure;  // the reason when not successful
+  std::string failure;  // the reason (or failure category) when not successful
+  // The task's named outcome measurements (TaskReport::outcome_metrics), each
+  // averaged over the trials into the run metric <name>_rate.
+  std::map<std::string, double> metrics;
+};
+
+// What a task reports. Trajectories are in the task's own unit (metres for the
+// Bullet tasks); errors are reported in `error_unit`, `error_scale` of them
+// per trajectory unit.
+struct TaskReport {
+  std::vector<std::string> trajectory_columns{"x", "y", "z"};
+  std::string error_unit = "cm";
+  double error_scale = 100.0;
+  // Segments whose generated trajectory is compared with the expert's (the
+  // paper's Table II), in table order; the metric names are
+  // <segment>_mp_error_mean_<unit> and <segment>_mp_error_max_<unit>.
+  std::vector<std::string> error_segments;
+  // The trajectory columns the errors measure (positions, not a gripper's
+  // opening); empty: all of them.
+  std::vector<int> error_columns;
+  // The decision made at the critical point (the paper's Table I): the segment
+  // whose generated trajectory classify_decision() reads and the labels it
+  // can return, in table order. No labels: the task has no such decision.
+  std::string decision_segment;
+  std::vector<std::string> decision_labels;
+  // The two trajectory columns of the trajectories figure's panels.
+  int plot_horizontal = 0;
+  int plot_vertical = 1;
+  // Names of Outcome::metrics every trial carries.
+  std::vector<std::string> outcome_metrics;
+  // Failure categories: a failed trial's reason starts with one of them, and
+  // the tables count the failures per category.
+  std::vector<std::string> failure_categories;
 };
 
 class Environment {
  public:
   virtual ~Environment() = default;
+
+  virtual TaskReport report() const = 0;
 
   virtual Scenario sample_scenario(Rng& rng) const = 0;
   virtual void reset(const Scenario& scenario) = 0;
@@ -32,17 +75,26 @@ class Environment {
   // The segments of the skill in execution order.
   virtual std::vector<SegmentInfo> segments() const = 0;
 
-  // The effector's current position (the start of the next segment).
+  // The effectors' current positions (one row, trajectory columns): where the
+  // next absolute segment starts.
   virtual Eigen::RowVectorXd effector_position() const = 0;
-  // Tracks a segment trajectory (rows: effector positions). Returns "" on
-  // success or why execution stopped (a physics blow-up, an invalid point).
-  virtual std::string execute(const Eigen::MatrixXd& trajectory) = 0;
+  // Tracks the trajectory of `segment` (rows: trajectory columns; offsets
+  // when the segment is relative; a segment the task does not list, such as
+  // a whole-skill "full", is absolute). Returns "" on success or why
+  // execution stopped (a physics blow-up, an invalid point).
+  virtual std::string execute(const std::string& segment, const Eigen::MatrixXd& trajectory) = 0;
   virtual Observation observe(bool with_image) = 0;
   virtual Outcome outcome() const = 0;
 
-  // The kind of correction a cor-MP trajectory performs (push, pull, none), for
-  // the paper's Table I; "" when the task has no such notion.
-  virtual std::string classify_correction(const Eigen::MatrixXd& trajectory) const = 0;
+  // The decision a trajectory of TaskReport::decision_segment performs (one
+  // of the declared labels); "" when the task has no decision.
+  virtual std::string classify_decision(const Eigen::MatrixXd&) const { return ""; }
+
+  // Writes the task's own figures of an evaluation into the run directory
+  // (the generic trajectories figure is written besides).
+  virtual void write_figures(const std::string& /*directory*/,
+                             const std::vector<EvaluatedTrial>& /*trials*/,
+                             const std::vector<Demonstration>& /*train*/) const {}
 };
 
 }  // namespace corrmp

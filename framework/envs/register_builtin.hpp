@@ -2,7 +2,7 @@
 #pragma once
 
 #include "core/registry.hpp"
-#include "envs/demonstrations.hpp"
+#include "data/demonstrations.hpp"
 #include "envs/environment.hpp"
 
 namespace corrmp {

@@ -17,7 +17,7 @@ namespace corrmp {
 namespace {
 
 constexpr char kMagic[4] = {'C', 'M', 'P', 'D'};
-constexpr uint32_t kVersion = 2;
+constexpr uint32_t kVersion = 3;  // 3: the camera model of each image
 
 class Writer {
  public:
@@ -48,6 +48,16 @@ class Writer {
     for (int row = 0; row < mat.rows; ++row) {
       out_.append(reinterpret_cast<const char*>(mat.ptr<float>(row)), sizeof(float) * mat.cols);
     }
+  }
+  void camera(const std::optional<CameraView>& view) {
+    pod(static_cast<uint8_t>(view.has_value()));
+    if (!view) return;
+    const CameraIntrinsics& k = view->intrinsics;
+    pod(static_cast<int32_t>(k.width));
+    pod(static_cast<int32_t>(k.height));
+    for (double v : {k.fx, k.fy, k.cx, k.cy, k.near, k.far}) pod(v);
+    const Eigen::Matrix4d pose = view->world_from_camera.matrix();
+    out_.append(reinterpret_cast<const char*>(pose.data()), sizeof(double) * 16);
   }
   std::string& data() { return out_; }
 
@@ -96,6 +106,18 @@ class Reader {
     at_ += sizeof(float) * rows * cols;
     return mat;
   }
+  std::optional<CameraView> camera() {
+    if (pod<uint8_t>() == 0) return std::nullopt;
+    CameraView view;
+    CameraIntrinsics& k = view.intrinsics;
+    k.width = pod<int32_t>();
+    k.height = pod<int32_t>();
+    for (double* v : {&k.fx, &k.fy, &k.cx, &k.cy, &k.near, &k.far}) *v = pod<double>();
+    Eigen::Matrix4d pose;
+    for (int i = 0; i < 16; ++i) pose.data()[i] = pod<double>();
+    view.world_from_camera.matrix() = pose;
+    return view;
+  }
   bool done() const { return at_ == data_.size(); }
 
  private:
@@ -127,6 +149,7 @@ void write_demo(Writer& w, const Demonstration& demo) {
     }
     w.image(s.start.rgb);
     w.depth(s.start.depth);
+    w.camera(s.start.camera);
   }
 }
 
@@ -150,6 +173,7 @@ Demonstration read_demo(Reader& r) {
     }
     s.start.rgb = r.image(cv::IMREAD_UNCHANGED);
     s.start.depth = r.depth();
+    s.start.camera = r.camera();
     demo.segments.push_back(std::move(s));
   }
   return demo;

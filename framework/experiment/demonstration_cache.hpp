@@ -7,15 +7,17 @@
 // Format (little-endian): "CMPD", uint32 version, uint64 demonstration count for
 // train then validation, then per demonstration: string scenario, string
 // correction, uint32 segments, per segment: string name, matrix x, matrix y,
-// vector context, uint32 state entries (string, double), PNG rgb, depth as
-// uint32 rows, cols and raw float32; strings and blobs are uint64 length + bytes. Then an FNV-1a
-// checksum of everything before.
+// vector context, double phase_begin, phase_end, uint32 state entries (string,
+// double), PNG rgb, depth as uint32 rows, cols and raw float32, uint8 camera
+// flag (then int32 width, height, double fx, fy, cx, cy, near, far and the
+// column-major 4x4 world_from_camera); strings and blobs are uint64 length +
+// bytes. Then an FNV-1a checksum of everything before. Version 3.
 #pragma once
 
 #include <optional>
 #include <string>
 
-#include "envs/demonstrations.hpp"
+#include "data/demonstrations.hpp"
 
 namespace corrmp {
 

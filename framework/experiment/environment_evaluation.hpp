@@ -1,37 +1,31 @@
 // Closed-loop evaluation in the environment (paper, Section IV-B): for each
 // trial a scenario is drawn from the evaluation's own seed stream, the expert
-// shows what it would do (the expected correction and reference trajectories),
+// shows what it would do (the expected decision and reference trajectories),
 // and the policy executes segment after segment, each generated from the
-// effector's position and the context observed at the segment's start.
-// Measures the paper's Table I (action choice, decision match, task success
-// per expected correction) and Table II (cor-MP and post-MP errors in cm).
+// effectors' position (or, for a relative segment, from zero offset) and the
+// context observed at the segment's start. What is measured is what the task
+// declares (TaskReport): the decision table (the paper's Table I), the
+// trajectory errors of its error segments (Table II) and its outcome metrics.
 #pragma once
 
-#include <map>
 #include <string>
 #include <vector>
 
 #include "context/context_extractor.hpp"
-#include "envs/demonstrations.hpp"
+#include "data/demonstrations.hpp"
+#include "data/evaluated_trial.hpp"
 #include "envs/environment.hpp"
 #include "policies/policy.hpp"
 #include "store/result_store.hpp"
 
 namespace corrmp {
 
-// One trial's generated and expert trajectories (rows x, y, z), per segment.
-struct TrialTrajectories {
-  int trial = 0;
-  bool success = false;
-  std::string expected_action, chosen_action;
-  std::map<std::string, Eigen::MatrixXd> generated, expert;
-};
-
 struct EnvironmentEvaluation {
+  TaskReport task;
   std::vector<TrialRecord> trials;
-  std::vector<TrialTrajectories> trajectories;
+  std::vector<EvaluatedTrial> evaluated;
   std::vector<MetricRecord> metrics;
-  std::string tables;  // Table I and Table II rows, as text
+  std::string tables;  // the decision, error and outcome tables, as text
 };
 
 EnvironmentEvaluation evaluate_in_environment(Environment& environment, DemonstrationSource& expert,

@@ -8,6 +8,7 @@
 
 #include "core/config/config_loader.hpp"
 #include "core/seeds.hpp"
+#include "experiment/component_checks.hpp"
 
 namespace corrmp {
 
@@ -59,6 +60,8 @@ Experiment load_experiment(const std::string& config_path,
   if (config.policy) {
     experiment.policy = registries.policies.create(*config.policy, experiment.context);
   }
+
+  check_components(experiment);
 
   experiment.resolved_yaml = experiment.root->to_yaml_string();
   experiment.config_hash = fmt::format("{:016x}", fnv1a64(experiment.resolved_yaml));

@@ -1,7 +1,7 @@
 // A loaded experiment: the resolved config tree, its typed top level and the
 // components built from the registries. Loading validates everything (each
 // component reads its parameters strictly), so a malformed config fails here,
-// before anything is written. DESIGN.md, "Contract: configs".
+// before anything is written. docs/architecture.md, "Configs".
 #pragma once
 
 #include <memory>

@@ -1,4 +1,4 @@
-// The top level of an experiment config: DESIGN.md, "Contract: configs".
+// The top level of an experiment config: docs/architecture.md, "Configs".
 // Component sections (demonstrations, policy, ...) carry a `type:` naming a
 // registry entry; their parameters are read by that entry.
 #pragma once

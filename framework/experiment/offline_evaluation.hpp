@@ -7,7 +7,7 @@
 #include <string>
 #include <vector>
 
-#include "envs/demonstrations.hpp"
+#include "data/demonstrations.hpp"
 #include "policies/policy.hpp"
 #include "store/result_store.hpp"
 

@@ -55,26 +55,33 @@ void write_run_json(const fs::path& dir, const Experiment& experiment, int64_t r
   write_text(dir / "run.json", run.str(2) + "\n");
 }
 
-// What determines an environment's demonstrations: the environment and
-// demonstrations sections and the root seed ("" without an environment).
+// What determines an environment's demonstrations: the source's type and
+// version, the environment and demonstrations sections and the root seed (""
+// without an environment: files and synthetic curves are not cached).
 std::string demonstrations_key(const Experiment& experiment) {
   const auto& config = experiment.config;
   if (!experiment.environment) return "";
-  const std::string text =
-      fmt::format("v4 seed {}\n{}{}", config.seed, config.environment->node->to_yaml_string(),
-                  config.demonstrations->node->to_yaml_string());
+  const std::string text = fmt::format("{} version {} seed {}\n{}{}", config.demonstrations->type,
+                                       experiment.demonstrations->version(), config.seed,
+                                       config.environment->node->to_yaml_string(),
+                                       config.demonstrations->node->to_yaml_string());
   return fmt::format("{:016x}", fnv1a64(text));
 }
 
 // Demonstrations from the cache when the same environment, source and seed
-// made them before; else collected (and cached when an expert made them).
+// made them before; else collected (and cached when an expert made them). A
+// cache file that cannot be read is reported and collected again.
 DemonstrationSplit collect_or_reuse(Experiment& experiment, const fs::path& cache_dir,
-                                    const std::string& key, Rng& rng) {
+                                    const std::string& key, bool use_cache, Rng& rng) {
   const fs::path cache = cache_dir / fmt::format("demonstrations-{}.bin", key);
-  if (!key.empty()) {
-    if (auto cached = load_demonstrations(cache.string())) {
-      spdlog::info("reusing cached demonstrations {}", cache.string());
-      return std::move(*cached);
+  if (!key.empty() && use_cache) {
+    try {
+      if (auto cached = load_demonstrations(cache.string())) {
+        spdlog::info("reusing cached demonstrations {}", cache.string());
+        return std::move(*cached);
+      }
+    } catch (const std::exception& e) {
+      spdlog::warn("{}; collecting the demonstrations again", e.what());
     }
   }
   DemonstrationSplit demos = experiment.demonstrations->collect(experiment.environment.get(), rng);
@@ -83,8 +90,9 @@ DemonstrationSplit collect_or_reuse(Experiment& experiment, const fs::path& cach
 }
 
 // The stages. Each appends what it measured; none invents a number.
-void run_stages(Experiment& experiment, const fs::path& dir, const fs::path& cache_dir,
+void run_stages(Experiment& experiment, const fs::path& dir, const RunOptions& options,
                 std::vector<TrialRecord>& trials, std::vector<MetricRecord>& metrics) {
+  const fs::path cache_dir = fs::path(options.out_dir) / "cache";
   if (!experiment.demonstrations) {
     spdlog::warn("no demonstrations section: nothing to collect, train or evaluate");
     return;
@@ -92,7 +100,8 @@ void run_stages(Experiment& experiment, const fs::path& dir, const fs::path& cac
   Rng collect_rng = experiment.context.seeds.stream("demonstrations");
   spdlog::info("collecting demonstrations ({})", experiment.config.demonstrations->type);
   const std::string key = demonstrations_key(experiment);
-  DemonstrationSplit demos = collect_or_reuse(experiment, cache_dir, key, collect_rng);
+  DemonstrationSplit demos =
+      collect_or_reuse(experiment, cache_dir, key, options.use_cache, collect_rng);
   check_interrupt();
   spdlog::info("collected {} training and {} validation demonstrations", demos.train.size(),
                demos.validation.size());
@@ -108,7 +117,8 @@ void run_stages(Experiment& experiment, const fs::path& dir, const fs::path& cac
     spdlog::info("fitting the context extractor ({})", experiment.config.context->type);
     std::vector<Demonstration> all = demos.train;
     all.insert(all.end(), demos.validation.begin(), demos.validation.end());
-    experiment.context_extractor->fit(all, {key.empty() ? "" : cache_dir.string(), key},
+    const bool cache_extractor = !key.empty() && options.use_cache;
+    experiment.context_extractor->fit(all, {cache_extractor ? cache_dir.string() : "", key},
                                       context_rng);
     for (const auto& [name, value] : experiment.context_extractor->metrics()) {
       metrics.push_back({name, value});
@@ -145,8 +155,11 @@ void run_stages(Experiment& experiment, const fs::path& dir, const fs::path& cac
     // and the measured trials are still recorded.
     if (write) {
       try {
-        write_trajectory_csv(evaluation.trajectories, (dir / "trajectories.csv").string());
-        write_trajectory_figure(evaluation.trajectories, (dir / "trajectories.png").string());
+        write_trajectory_csv(evaluation.evaluated, evaluation.task,
+                             (dir / "trajectories.csv").string());
+        write_trajectory_figure(evaluation.evaluated, evaluation.task,
+                                (dir / "trajectories.png").string());
+        experiment.environment->write_figures(dir.string(), evaluation.evaluated, demos.train);
       } catch (const std::exception& e) {
         spdlog::warn("trajectory files not written: {}", e.what());
       }
@@ -191,7 +204,7 @@ RunResult run_pipeline(Experiment& experiment, const RunOptions& options) {
     write_run_json(dir, experiment, result.run_id, git, started_at, result, "");
     spdlog::info("run {} of '{}' in {}", result.run_id, experiment.config.experiment.name,
                  dir.string());
-    run_stages(experiment, dir, fs::path(options.out_dir) / "cache", trials, metrics);
+    run_stages(experiment, dir, options, trials, metrics);
     store.complete_run(result.run_id, trials, metrics);
     result.status = "completed";
   } catch (const Interrupted& e) {

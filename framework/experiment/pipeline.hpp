@@ -13,6 +13,9 @@ namespace corrmp {
 struct RunOptions {
   std::string db_path = "results/results.sqlite";
   std::string out_dir = "results";
+  // false: collect demonstrations and fit extractors afresh (the results are
+  // still written to the cache for later runs).
+  bool use_cache = true;
 };
 
 struct RunResult {

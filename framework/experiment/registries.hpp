@@ -1,12 +1,12 @@
 // Every component registry, filled by one explicit register_builtin_*() per
-// module. DESIGN.md, "Core interfaces".
+// module. docs/architecture.md, "Components".
 #pragma once
 
 #include <string>
 
 #include "context/context_extractor.hpp"
 #include "core/registry.hpp"
-#include "envs/demonstrations.hpp"
+#include "data/demonstrations.hpp"
 #include "envs/environment.hpp"
 #include "policies/policy.hpp"
 

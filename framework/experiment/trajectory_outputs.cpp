@@ -25,45 +25,75 @@ cv::Scalar segment_colour(const std::string& segment) {
   return {120, 60, 160};
 }
 
-void draw_path(cv::Mat& canvas, const PlotPanel& panel, const Eigen::MatrixXd& path,
-               const cv::Scalar& colour, int thickness) {
+// A segment's rows in world coordinates: relative segments start at their origin.
+Eigen::MatrixXd in_world(const EvaluatedTrial& trial, const std::string& segment,
+                         const Eigen::MatrixXd& path) {
+  const auto origin = trial.origins.find(segment);
+  if (origin == trial.origins.end()) return path;
+  return path.rowwise() + origin->second;
+}
+
+void draw_path(cv::Mat& canvas, const PlotPanel& panel, const TaskReport& task,
+               const Eigen::MatrixXd& path, const cv::Scalar& colour, int thickness) {
   if (!path.allFinite()) return;  // a failed generation; its trial is framed red
+  const int h = task.plot_horizontal, v = task.plot_vertical;
   for (Eigen::Index t = 1; t < path.rows(); ++t) {
-    cv::line(canvas, panel.to_pixel(path(t - 1, 1), path(t - 1, 0)),
-             panel.to_pixel(path(t, 1), path(t, 0)), colour, thickness, cv::LINE_AA);
+    cv::line(canvas, panel.to_pixel(path(t - 1, h), path(t - 1, v)),
+             panel.to_pixel(path(t, h), path(t, v)), colour, thickness, cv::LINE_AA);
   }
 }
 
 }  // namespace
 
-void write_trajectory_csv(const std::vector<TrialTrajectories>& trials, const std::string& path) {
+void write_trajectory_csv(const std::vector<EvaluatedTrial>& trials, const TaskReport& task,
+                          const std::string& path) {
   auto out = fmt::output_file(path);
-  out.print("trial,segment,step,x,y,z,expert_x,expert_y,expert_z\n");
+  const auto& columns = task.trajectory_columns;
+  out.print("trial,segment,frame,step");
+  for (const auto& c : columns) out.print(",{}", c);
+  for (const auto& c : columns) out.print(",expert_{}", c);
+  out.print("\n");
+  const auto width = static_cast<Eigen::Index>(columns.size());
   for (const auto& trial : trials) {
     for (const auto& [segment, generated] : trial.generated) {
       const Eigen::MatrixXd& expert = trial.expert.at(segment);
+      if (generated.cols() != width || expert.cols() != width) {
+        throw std::invalid_argument(fmt::format(
+            "write_trajectory_csv: trial {} segment '{}' has {} columns, the task declares {}",
+            trial.trial, segment, generated.cols(), width));
+      }
+      const char* frame = trial.origins.count(segment) ? "relative" : "absolute";
       for (Eigen::Index t = 0; t < generated.rows(); ++t) {
-        out.print("{},{},{},{},{},{},{},{},{}\n", trial.trial, segment, t, generated(t, 0),
-                  generated(t, 1), generated(t, 2), expert(t, 0), expert(t, 1), expert(t, 2));
+        out.print("{},{},{},{}", trial.trial, segment, frame, t);
+        for (Eigen::Index c = 0; c < width; ++c) out.print(",{}", generated(t, c));
+        for (Eigen::Index c = 0; c < width; ++c) out.print(",{}", expert(t, c));
+        out.print("\n");
       }
     }
   }
 }
 
-void write_trajectory_figure(const std::vector<TrialTrajectories>& trials,
+void write_trajectory_figure(const std::vector<EvaluatedTrial>& trials, const TaskReport& task,
                              const std::string& png_path) {
   constexpr const char* kWhere = "write_trajectory_figure";
   if (trials.empty()) throw std::invalid_argument(fmt::format("{}: no trials", kWhere));
   double x_lo = std::numeric_limits<double>::infinity(), x_hi = -x_lo;
   double y_lo = x_lo, y_hi = -x_lo;
+  const int h = task.plot_horizontal, v = task.plot_vertical;
+  const int width = static_cast<int>(task.trajectory_columns.size());
+  if (h < 0 || v < 0 || h >= width || v >= width) {
+    throw std::invalid_argument(
+        fmt::format("{}: plot columns {} and {} of a {}-column trajectory", kWhere, h, v, width));
+  }
   for (const auto& trial : trials) {
     for (const auto* paths : {&trial.generated, &trial.expert}) {
-      for (const auto& [segment, path] : *paths) {
-        if (path.rows() == 0 || !path.allFinite()) continue;
-        x_lo = std::min(x_lo, path.col(0).minCoeff());
-        x_hi = std::max(x_hi, path.col(0).maxCoeff());
-        y_lo = std::min(y_lo, path.col(1).minCoeff());
-        y_hi = std::max(y_hi, path.col(1).maxCoeff());
+      for (const auto& [segment, relative_path] : *paths) {
+        const Eigen::MatrixXd path = in_world(trial, segment, relative_path);
+        if (path.rows() == 0 || !path.allFinite() || path.cols() != width) continue;
+        x_lo = std::min(x_lo, path.col(v).minCoeff());
+        x_hi = std::max(x_hi, path.col(v).maxCoeff());
+        y_lo = std::min(y_lo, path.col(h).minCoeff());
+        y_hi = std::max(y_hi, path.col(h).maxCoeff());
       }
     }
   }
@@ -76,12 +106,15 @@ void write_trajectory_figure(const std::vector<TrialTrajectories>& trials,
   const int rows = (count + kTrajectoryColumns - 1) / kTrajectoryColumns;
   cv::Mat canvas(kTrajectoryHeader + rows * kTrajectoryPanelHeight, columns * kTrajectoryPanelWidth,
                  CV_8UC3, kPlotWhite);
+  const std::string& vertical = task.trajectory_columns[v];
+  const std::string& horizontal = task.trajectory_columns[h];
   put_text(canvas,
-           "top view, x (m) up against y (m) right; grey: expert; generated pre blue, cor orange, "
-           "post green",
+           fmt::format("{} up against {} right; grey: expert; generated pre blue, cor orange, "
+                       "post green",
+                       vertical, horizontal),
            {8, 20}, 0.45);
   for (int i = 0; i < count; ++i) {
-    const TrialTrajectories& trial = trials[i];
+    const EvaluatedTrial& trial = trials[i];
     const cv::Point origin((i % kTrajectoryColumns) * kTrajectoryPanelWidth,
                            kTrajectoryHeader + (i / kTrajectoryColumns) * kTrajectoryPanelHeight);
     const PlotPanel panel{
@@ -92,11 +125,17 @@ void write_trajectory_figure(const std::vector<TrialTrajectories>& trials,
     panel.draw_frame(canvas,
                      fmt::format("{}: {} -> {}, {}", trial.trial, expected, chosen,
                                  trial.success ? "ok" : "FAILED"),
-                     "y (m)");
+                     horizontal);
     if (!trial.success) cv::rectangle(canvas, panel.pixels, kFailedRed, 2);
-    for (const auto& [segment, path] : trial.expert) draw_path(canvas, panel, path, kExpertGrey, 3);
+    for (const auto& [segment, path] : trial.expert) {
+      if (path.cols() == width) {
+        draw_path(canvas, panel, task, in_world(trial, segment, path), kExpertGrey, 3);
+      }
+    }
     for (const auto& [segment, path] : trial.generated) {
-      draw_path(canvas, panel, path, segment_colour(segment), 1);
+      if (path.cols() == width) {
+        draw_path(canvas, panel, task, in_world(trial, segment, path), segment_colour(segment), 1);
+      }
     }
   }
   write_png(canvas, png_path, kWhere);

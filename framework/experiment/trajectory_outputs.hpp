@@ -6,24 +6,28 @@
 #include <string>
 #include <vector>
 
-#include "experiment/environment_evaluation.hpp"
+#include "data/evaluated_trial.hpp"
+#include "envs/environment.hpp"
 
 namespace corrmp {
 
-// Columns trial, segment, step, x, y, z, expert_x, expert_y, expert_z.
-void write_trajectory_csv(const std::vector<TrialTrajectories>& trials, const std::string& path);
+// Columns trial, segment, frame (absolute or relative), step, then the task's
+// trajectory columns as generated, then the same prefixed expert_.
+void write_trajectory_csv(const std::vector<EvaluatedTrial>& trials, const TaskReport& task,
+                          const std::string& path);
 
 // kTrajectoryColumns panels per row, each kTrajectoryPanelWidth x
-// kTrajectoryPanelHeight under a kTrajectoryHeader-pixel caption: the
-// gripper's x (vertical) against y (horizontal), all panels on the same axes;
-// the expert's path thick and grey beneath the generated one, coloured by
-// segment (pre blue, cor orange, post green); the title names the trial, the
-// expected and chosen corrections and whether it succeeded.
+// kTrajectoryPanelHeight under a kTrajectoryHeader-pixel caption: the task's
+// plot columns (TaskReport::plot_vertical against plot_horizontal) in world
+// coordinates, all panels on the same axes; the expert's path thick and grey
+// beneath the generated one, coloured by segment (pre blue, cor orange, post
+// green); the title names the trial, the expected and chosen decisions and
+// whether it succeeded.
 constexpr int kTrajectoryColumns = 5;
 constexpr int kTrajectoryPanelWidth = 300;
 constexpr int kTrajectoryPanelHeight = 220;
 constexpr int kTrajectoryHeader = 30;
-void write_trajectory_figure(const std::vector<TrialTrajectories>& trials,
+void write_trajectory_figure(const std::vector<EvaluatedTrial>& trials, const TaskReport& task,
                              const std::string& png_path);
 
 }  // namespace corrmp

@@ -49,6 +49,12 @@ std::vector<PolicyTrainingSummary> MonolithicCnmp::fit(const std::vector<Demonst
   return {summary};
 }
 
+std::vector<std::string> MonolithicCnmp::data_segments() const {
+  std::vector<std::string> names{params_.segment};
+  names.insert(names.end(), params_.matched_segments.begin(), params_.matched_segments.end());
+  return names;
+}
+
 CnmpPrediction MonolithicCnmp::generate(const std::string& segment,
                                         const Eigen::MatrixXd& observations,
                                         const Eigen::VectorXd& context,

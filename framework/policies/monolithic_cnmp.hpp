@@ -42,6 +42,8 @@ class MonolithicCnmp : public Policy {
                                          const std::vector<Demonstration>& validation,
                                          Rng& rng) override;
   std::vector<std::string> segments() const override { return {params_.segment}; }
+  std::vector<std::string> data_segments() const override;
+  std::vector<std::string> context_segments() const override { return {params_.segment}; }
   CnmpPrediction generate(const std::string& segment, const Eigen::MatrixXd& observations,
                           const Eigen::VectorXd& context, const Eigen::MatrixXd& query_x) override;
   void save(const std::string& directory) override;

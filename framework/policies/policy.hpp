@@ -10,7 +10,7 @@
 #include "cnmp/cnmp_model.hpp"
 #include "cnmp/cnmp_trainer.hpp"
 #include "core/seeds.hpp"
-#include "envs/demonstrations.hpp"
+#include "data/demonstrations.hpp"
 
 namespace corrmp {
 
@@ -32,6 +32,11 @@ class Policy {
 
   // The segments this policy generates, in execution order.
   virtual std::vector<std::string> segments() const = 0;
+  // The demonstrations' segments it learns from (checked at load against what
+  // the demonstration source provides).
+  virtual std::vector<std::string> data_segments() const { return segments(); }
+  // The segments it conditions on a context (each needs one at load).
+  virtual std::vector<std::string> context_segments() const = 0;
 
   // The trajectory of `segment` conditioned on `observations` (rows x then y,
   // typically the segment's start point) and `context`, at query inputs `query_x`.

@@ -1,6 +1,8 @@
 // Registration of the policies module's components.
 #include "policies/register_builtin.hpp"
 
+#include <memory>
+
 #include "policies/monolithic_cnmp.hpp"
 #include "policies/segmented_cnmp.hpp"
 
@@ -10,13 +12,13 @@ void register_builtin_policies(Registry<Policy>& policies) {
   policies.add<SegmentedCnmpParams>(
       "segmented_cnmp", "one CNMP per segment, each conditioned on its start and context (paper)",
       [](const SegmentedCnmpParams& p, const BuildContext& context) {
-        return new SegmentedCnmp(p, context.seeds.seed_for("policy.init"));
+        return std::make_unique<SegmentedCnmp>(p, context.seeds.seed_for("policy.init"));
       });
   policies.add<MonolithicCnmpParams>(
       "monolithic_cnmp",
       "baseline: one CNMP for the whole trajectory, parameters matched to the segment networks",
       [](const MonolithicCnmpParams& p, const BuildContext& context) {
-        return new MonolithicCnmp(p, context.seeds.seed_for("policy.init"));
+        return std::make_unique<MonolithicCnmp>(p, context.seeds.seed_for("policy.init"));
       });
 }
 

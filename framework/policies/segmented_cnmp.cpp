@@ -56,6 +56,14 @@ std::vector<std::string> SegmentedCnmp::segments() const {
   return names;
 }
 
+std::vector<std::string> SegmentedCnmp::context_segments() const {
+  std::vector<std::string> names;
+  for (const auto& s : params_.segments) {
+    if (s.use_context) names.push_back(s.name);
+  }
+  return names;
+}
+
 CnmpPrediction SegmentedCnmp::generate(const std::string& segment,
                                        const Eigen::MatrixXd& observations,
                                        const Eigen::VectorXd& context,

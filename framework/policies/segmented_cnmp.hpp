@@ -47,6 +47,7 @@ class SegmentedCnmp : public Policy {
                                          const std::vector<Demonstration>& validation,
                                          Rng& rng) override;
   std::vector<std::string> segments() const override;
+  std::vector<std::string> context_segments() const override;
   CnmpPrediction generate(const std::string& segment, const Eigen::MatrixXd& observations,
                           const Eigen::VectorXd& context, const Eigen::MatrixXd& query_x) override;
   void save(const std::string& directory) override;

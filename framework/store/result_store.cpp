@@ -1,4 +1,4 @@
-// The SQLite result store. DESIGN.md, "Contract: database minimum".
+// The SQLite result store. docs/architecture.md, "Database".
 #include "store/result_store.hpp"
 
 #include <fmt/format.h>
@@ -39,7 +39,8 @@ CREATE TABLE IF NOT EXISTS trials (
   expected_action TEXT,
   chosen_action TEXT,
   success INTEGER NOT NULL,
-  failure TEXT
+  failure TEXT,
+  details TEXT
 );
 CREATE TABLE IF NOT EXISTS metrics (
   run_id INTEGER NOT NULL REFERENCES runs(id),
@@ -135,6 +136,7 @@ void ResultStore::migrate() {
           "another --db",
           path_, version, kSchemaVersion));
     }
+    if (version == 1) execute("ALTER TABLE trials ADD COLUMN details TEXT");  // v2: details
     if (version < kSchemaVersion) {
       execute(kSchema);
       execute(fmt::format("PRAGMA user_version = {}", kSchemaVersion));
@@ -195,7 +197,7 @@ void ResultStore::set_out_dir(int64_t run_id, const std::string& out_dir) {
 void ResultStore::insert_trials(int64_t run_id, const std::vector<TrialRecord>& trials) {
   Statement insert(db_,
                    "INSERT INTO trials (run_id, trial, scenario, expected_action, chosen_action, "
-                   "success, failure) VALUES (?, ?, ?, ?, ?, ?, ?)");
+                   "success, failure, details) VALUES (?, ?, ?, ?, ?, ?, ?, ?)");
   for (const auto& trial : trials) {
     insert.bind(1, run_id)
         .bind(2, int64_t{trial.trial})
@@ -207,6 +209,11 @@ void ResultStore::insert_trials(int64_t run_id, const std::vector<TrialRecord>& 
       insert.bind_null(7);
     } else {
       insert.bind(7, trial.failure);
+    }
+    if (trial.details.empty()) {
+      insert.bind_null(8);
+    } else {
+      insert.bind(8, trial.details);
     }
     insert.run();
   }

@@ -1,7 +1,7 @@
 // The SQLite result store: runs, trials and metrics. WAL mode; every write in a
 // BEGIN IMMEDIATE transaction with a busy timeout, so several processes can share
 // one file; schema version in PRAGMA user_version (a newer one is refused).
-// DESIGN.md, "Contract: database minimum".
+// docs/architecture.md, "Database".
 #pragma once
 
 #include <sqlite3.h>
@@ -36,6 +36,7 @@ struct TrialRecord {
   std::string chosen_action;
   bool success = false;
   std::string failure;  // empty on success
+  std::string details;  // JSON: the trial's contexts and the task's outcome values
 };
 
 struct MetricRecord {
@@ -45,7 +46,7 @@ struct MetricRecord {
 
 class ResultStore {
  public:
-  static constexpr int kSchemaVersion = 1;
+  static constexpr int kSchemaVersion = 2;  // 2: trials.details
 
   // Opens (creating the file and its folder if needed) and migrates the schema.
   explicit ResultStore(const std::string& path, int busy_timeout_ms = 60000);

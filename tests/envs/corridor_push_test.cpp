@@ -44,7 +44,7 @@ TEST(CorridorPush, TheExpertSucceedsOnAtLeast98PercentOfScenariosWithTheRightDec
     }
     ++decisions[demo.correction];
     // The demonstrated cor-MP is classified as the decision it implements.
-    EXPECT_EQ(env.classify_correction(demo.find("cor")->y), demo.correction);
+    EXPECT_EQ(env.classify_decision(demo.find("cor")->y), demo.correction);
     // After the correction the object was aligned with the corridor.
     ASSERT_EQ(demo.segments.size(), 4u);
     EXPECT_EQ(demo.find("full")->y.rows(), 140);
@@ -64,7 +64,7 @@ TEST(CorridorPush, TouchingTheCorridorFailsTheTrial) {
   const Eigen::Vector3d object = env.object_position();
   const Eigen::MatrixXd straight =
       sample_path({start, {object.x(), start.y(), 0.03}, {object.x(), 0.12, 0.03}}, 60);
-  EXPECT_EQ(env.execute(straight), "");
+  EXPECT_EQ(env.execute("pre", straight), "");
   const Outcome outcome = env.outcome();
   EXPECT_FALSE(outcome.success);
   EXPECT_EQ(outcome.failure, "the object touched the corridor");

@@ -38,6 +38,7 @@ class ReplayingPolicy : public Policy {
     return {};
   }
   std::vector<std::string> segments() const override { return {"full"}; }
+  std::vector<std::string> context_segments() const override { return {}; }
   CnmpPrediction generate(const std::string& segment, const Eigen::MatrixXd&,
                           const Eigen::VectorXd&, const Eigen::MatrixXd& query_x) override {
     EXPECT_EQ(segment, "full");
@@ -84,9 +85,9 @@ TEST(EnvironmentEvaluation, AWholeSkillPolicyIsCutAtTheReferencesCriticalPoints)
   EXPECT_LT(metrics.at("post_mp_error_max_cm"), 0.1);
   // Each trial's trajectories are returned for the files: the policy's
   // segments beside the expert's, point for point.
-  ASSERT_EQ(result.trajectories.size(), 4u);
+  ASSERT_EQ(result.evaluated.size(), 4u);
   for (int t = 0; t < trials; ++t) {
-    const TrialTrajectories& paths = result.trajectories[t];
+    const EvaluatedTrial& paths = result.evaluated[t];
     EXPECT_EQ(paths.trial, t);
     EXPECT_TRUE(paths.success);
     EXPECT_EQ(paths.chosen_action, result.trials[t].chosen_action);

@@ -15,8 +15,20 @@ namespace {
 
 using testing::TempDir;
 
-TrialTrajectories a_trial(int index, bool success) {
-  TrialTrajectories trial{index, success, "push", "pull", {}, {}};
+TaskReport xyz_task() {
+  TaskReport task;
+  task.trajectory_columns = {"x", "y", "z"};
+  task.plot_horizontal = 1;
+  task.plot_vertical = 0;
+  return task;
+}
+
+EvaluatedTrial a_trial(int index, bool success) {
+  EvaluatedTrial trial;
+  trial.trial = index;
+  trial.success = success;
+  trial.expected_action = "push";
+  trial.chosen_action = "pull";
   Eigen::MatrixXd expert(2, 3), generated(2, 3);
   expert << 0.40, -0.20, 0.03, 0.40, 0.00, 0.03;  // along y at x = 0.40
   generated << 0.42, -0.20, 0.03, 0.42, 0.00, 0.03;
@@ -27,15 +39,30 @@ TrialTrajectories a_trial(int index, bool success) {
 
 TEST(TrajectoryOutputs, CsvHoldsEveryGeneratedAndExpertPoint) {
   TempDir dir;
-  write_trajectory_csv({a_trial(0, true), a_trial(3, false)}, dir.file("t.csv"));
+  EvaluatedTrial relative = a_trial(3, false);
+  relative.origins["cor"] = Eigen::RowVector3d(1, 2, 3);
+  write_trajectory_csv({a_trial(0, true), relative}, xyz_task(), dir.file("t.csv"));
   std::stringstream text;
   text << std::ifstream(dir.file("t.csv")).rdbuf();
   EXPECT_EQ(text.str(),
-            "trial,segment,step,x,y,z,expert_x,expert_y,expert_z\n"
-            "0,cor,0,0.42,-0.2,0.03,0.4,-0.2,0.03\n"
-            "0,cor,1,0.42,0,0.03,0.4,0,0.03\n"
-            "3,cor,0,0.42,-0.2,0.03,0.4,-0.2,0.03\n"
-            "3,cor,1,0.42,0,0.03,0.4,0,0.03\n");
+            "trial,segment,frame,step,x,y,z,expert_x,expert_y,expert_z\n"
+            "0,cor,absolute,0,0.42,-0.2,0.03,0.4,-0.2,0.03\n"
+            "0,cor,absolute,1,0.42,0,0.03,0.4,0,0.03\n"
+            "3,cor,relative,0,0.42,-0.2,0.03,0.4,-0.2,0.03\n"
+            "3,cor,relative,1,0.42,0,0.03,0.4,0,0.03\n");
+}
+
+TEST(TrajectoryOutputs, CsvColumnsAreTheTasks) {
+  TempDir dir;
+  TaskReport task = xyz_task();
+  task.trajectory_columns = {"a", "b"};
+  EXPECT_THROW(write_trajectory_csv({a_trial(0, true)}, task, dir.file("t.csv")),
+               std::invalid_argument);
+  task.trajectory_columns = {"a", "b", "c"};
+  write_trajectory_csv({a_trial(0, true)}, task, dir.file("t.csv"));
+  std::string header;
+  std::getline(std::ifstream(dir.file("t.csv")) >> std::ws, header);
+  EXPECT_EQ(header, "trial,segment,frame,step,a,b,c,expert_a,expert_b,expert_c");
 }
 
 // The pixel nearest `colour` in the column `x`, rows y-1 .. y+1 (lines are
@@ -51,9 +78,9 @@ cv::Vec3b nearest_of(const cv::Mat& image, int y, int x, const cv::Vec3b& colour
 
 TEST(TrajectoryOutputs, FigureHasOnePanelPerTrialOnSharedAxes) {
   TempDir dir;
-  std::vector<TrialTrajectories> trials;
+  std::vector<EvaluatedTrial> trials;
   for (int i = 0; i < 7; ++i) trials.push_back(a_trial(i, i != 6));
-  write_trajectory_figure(trials, dir.file("t.png"));
+  write_trajectory_figure(trials, xyz_task(), dir.file("t.png"));
   const cv::Mat image = cv::imread(dir.file("t.png"), cv::IMREAD_COLOR);
   ASSERT_FALSE(image.empty());
   EXPECT_EQ(image.cols, kTrajectoryColumns * kTrajectoryPanelWidth);
@@ -82,9 +109,13 @@ TEST(TrajectoryOutputs, FigureHasOnePanelPerTrialOnSharedAxes) {
 
 TEST(TrajectoryOutputs, FigureErrorsNameTheFunction) {
   TempDir dir;
-  EXPECT_THROW(write_trajectory_figure({}, dir.file("t.png")), std::invalid_argument);
+  EXPECT_THROW(write_trajectory_figure({}, xyz_task(), dir.file("t.png")), std::invalid_argument);
+  TaskReport bad_axes = xyz_task();
+  bad_axes.plot_vertical = 3;
+  EXPECT_THROW(write_trajectory_figure({a_trial(0, true)}, bad_axes, dir.file("t.png")),
+               std::invalid_argument);
   try {
-    write_trajectory_figure({a_trial(0, true)}, dir.file("missing/dir/t.png"));
+    write_trajectory_figure({a_trial(0, true)}, xyz_task(), dir.file("missing/dir/t.png"));
     ADD_FAILURE() << "no error for an unwritable path";
   } catch (const std::runtime_error& e) {
     EXPECT_NE(std::string(e.what()).find("write_trajectory_figure: cannot write"),

@@ -33,7 +33,7 @@ std::string case_name(const ::testing::TestParamInfo<TransposeCase>& info) {
 
 void PrintTo(const TransposeCase& c, std::ostream* os) { *os << describe(c); }
 
-const TransposeCase kCases[] = {
+constexpr TransposeCase kCases[] = {
     {3, 2, 1, 1, 4, 3}, {3, 2, 1, 0, 3, 4}, {3, 1, 1, 0, 4, 4}, {3, 1, 0, 0, 3, 2},
     {2, 2, 0, 0, 3, 3}, {3, 3, 1, 2, 2, 3}, {4, 2, 1, 1, 3, 3},
 };

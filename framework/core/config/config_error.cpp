@@ -1,4 +1,4 @@
-// Config errors: formatting of locations and messages. DESIGN.md, "Contract: configs".
+// Config errors: formatting of locations and messages. docs/architecture.md, "Configs".
 #include "core/config/config_error.hpp"
 
 #include <fmt/format.h>

@@ -1,5 +1,5 @@
 // Config errors: one line naming the file, line, column and dotted key path.
-// DESIGN.md, "Contract: configs".
+// docs/architecture.md, "Configs".
 #pragma once
 
 #include <stdexcept>

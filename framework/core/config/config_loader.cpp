@@ -1,4 +1,4 @@
-// Config loading with includes and overrides. DESIGN.md, "Contract: configs".
+// Config loading with includes and overrides. docs/architecture.md, "Configs".
 #include "core/config/config_loader.hpp"
 
 #include <algorithm>

@@ -1,5 +1,5 @@
 // Loading a config: YAML file -> `include:` files deep-merged underneath it ->
-// command-line overrides `key.path=value` on top. DESIGN.md, "Contract: configs".
+// command-line overrides `key.path=value` on top. docs/architecture.md, "Configs".
 #pragma once
 
 #include <string>

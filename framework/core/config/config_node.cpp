@@ -1,4 +1,4 @@
-// A location-aware YAML tree built from yaml-cpp nodes. DESIGN.md, "Contract: configs".
+// A location-aware YAML tree built from yaml-cpp nodes. docs/architecture.md, "Configs".
 #include "core/config/config_node.hpp"
 
 #include <yaml-cpp/yaml.h>

@@ -1,6 +1,6 @@
 // A YAML document tree that remembers where every value came from (file, line,
 // column), so that config errors can name them after includes and overrides
-// have been merged. DESIGN.md, "Contract: configs".
+// have been merged. docs/architecture.md, "Configs".
 #pragma once
 
 #include <list>

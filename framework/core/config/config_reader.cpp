@@ -1,5 +1,5 @@
 // Strict typed config reading: scalar decoding, range checks, unknown keys.
-// DESIGN.md, "Contract: configs".
+// docs/architecture.md, "Configs".
 #include "core/config/config_reader.hpp"
 
 #include <fmt/format.h>

@@ -12,7 +12,7 @@
 // used back into the node, so the resolved config shows every value in force.
 // Unknown keys (with a did-you-mean), missing required keys, wrong types and
 // out-of-range values throw ConfigError naming file:line:column and the dotted
-// key path. DESIGN.md, "Contract: configs".
+// key path. docs/architecture.md, "Configs".
 #pragma once
 
 #include <cstdint>
@@ -119,6 +119,11 @@ class ConfigReader {
     if (!node.is_sequence()) {
       throw ConfigError(node.where(), path,
                         std::string("expected a list, got ") + kind_name(node.kind()));
+    }
+    if (rule.list_size >= 0 && static_cast<int>(node.items().size()) != rule.list_size) {
+      throw ConfigError(node.where(), path,
+                        "expected a list of " + std::to_string(rule.list_size) + " items, got " +
+                            std::to_string(node.items().size()));
     }
     value.clear();
     int index = 0;

@@ -1,5 +1,6 @@
 // Constraints a config field declares: required or defaulted, numeric range,
-// allowed strings. DESIGN.md, "Contract: configs" (out-of-range values are errors).
+// allowed strings, fixed list sizes. docs/architecture.md, "Configs" (out-of-range values are
+// errors).
 #pragma once
 
 #include <limits>
@@ -14,6 +15,7 @@ struct FieldRule {
   double max = std::numeric_limits<double>::infinity();
   bool min_exclusive = false;
   std::vector<std::string> allowed;  // empty: any string
+  int list_size = -1;                // a list's exact number of items; -1: any
 
   FieldRule& required() {
     is_required = true;
@@ -34,6 +36,11 @@ struct FieldRule {
     return *this;
   }
 
+  FieldRule& size_is(int items) {
+    list_size = items;
+    return *this;
+  }
+
   bool accepts(double value) const {
     return (min_exclusive ? value > min : value >= min) && value <= max;
   }
@@ -46,6 +53,8 @@ inline FieldRule required() { return FieldRule{}.required(); }
 inline FieldRule at_least(double value) { return FieldRule{}.at_least(value); }
 inline FieldRule positive() { return FieldRule{}.above(0.0); }
 inline FieldRule in_range(double lo, double hi) { return FieldRule{}.at_least(lo).at_most(hi); }
+// A fixed-size list (a position, a size, a colour): exactly `items` entries.
+inline FieldRule size_is(int items) { return FieldRule{}.size_is(items); }
 inline FieldRule one_of(std::vector<std::string> allowed) {
   FieldRule rule;
   rule.allowed = std::move(allowed);

@@ -1,5 +1,5 @@
 // Conversion between config scalars (text) and typed values, strictly: "3.5" is
-// not an int, "yes" is not a bool. DESIGN.md, "Contract: configs".
+// not an int, "yes" is not a bool. docs/architecture.md, "Configs".
 #pragma once
 
 #include <cstdint>

@@ -111,7 +111,7 @@ Demonstration CorridorExpert::demonstrate(Environment& environment, const Scenar
     if (slowness.empty()) slowness.assign(waypoints.size() - 1, 1.0);
     for (double& s : slowness) s *= tempo_rng ? tempo_factor(*tempo_rng) : 1.0;
     const Eigen::MatrixXd path = sample_path(waypoints, points, slowness);
-    const std::string failure = env.execute(path);
+    const std::string failure = env.execute(name, path);
     if (!failure.empty())
       throw std::runtime_error("the expert's " + name + "-MP failed: " + failure);
     demo.segments.push_back(segment_of(name, path, std::move(start)));
@@ -158,10 +158,10 @@ DemonstrationSplit CorridorExpert::collect(Environment* environment, Rng& rng) {
   const int attempts = wanted * params_.max_attempts_factor;
   DemonstrationSplit split;
   Progress progress("demonstrations", wanted);
-  int failed = 0;
-  for (int attempt = 0; attempt < attempts &&
-                        static_cast<int>(split.train.size() + split.validation.size()) < wanted;
-       ++attempt) {
+  int failed = 0, tried = 0;
+  for (;
+       tried < attempts && static_cast<int>(split.train.size() + split.validation.size()) < wanted;
+       ++tried) {
     check_interrupt();
     const Scenario scenario = environment->sample_scenario(rng);
     try {
@@ -178,9 +178,11 @@ DemonstrationSplit CorridorExpert::collect(Environment* environment, Rng& rng) {
     }
   }
   progress.finish(fmt::format("{} dropped", failed));
-  if (static_cast<int>(split.train.size() + split.validation.size()) < wanted) {
+  const int succeeded = static_cast<int>(split.train.size() + split.validation.size());
+  if (succeeded < wanted) {
     throw std::runtime_error(
-        fmt::format("the expert succeeded on only {} of {} scenarios", wanted - failed, attempts));
+        fmt::format("the expert succeeded on only {} of the {} scenarios tried ({} wanted)",
+                    succeeded, tried, wanted));
   }
   return split;
 }

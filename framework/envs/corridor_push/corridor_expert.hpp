@@ -19,8 +19,8 @@
 #include <vector>
 
 #include "core/config/field_rule.hpp"
+#include "data/demonstrations.hpp"
 #include "envs/corridor_push/corridor_push.hpp"
-#include "envs/demonstrations.hpp"
 
 namespace corrmp {
 
@@ -51,7 +51,11 @@ class CorridorExpert : public DemonstrationSource {
   explicit CorridorExpert(const CorridorExpertParams& params) : params_(params) {}
 
   DemonstrationSplit collect(Environment* environment, Rng& rng) override;
+  std::vector<std::string> segments() const override { return {"pre", "cor", "post", "full"}; }
   bool needs_environment() const override { return true; }
+  bool can_demonstrate() const override { return true; }
+  // 5: the first per-source version (the pipeline's global key was at v4).
+  std::string version() const override { return "5"; }
   // At the expert's nominal tempo (the evaluation's reference).
   Demonstration demonstrate(Environment& environment, const Scenario& scenario,
                             bool with_images) override;

@@ -31,6 +31,17 @@ CorridorPush::CorridorPush(const CorridorPushParams& params)
 
 CorridorPush::~CorridorPush() = default;
 
+TaskReport CorridorPush::report() const {
+  TaskReport report;
+  report.trajectory_columns = {"x", "y", "z"};
+  report.error_segments = {"cor", "post"};  // the paper's Table II
+  report.decision_segment = "cor";
+  report.decision_labels = {"push", "none", "pull"};
+  report.plot_horizontal = 1;  // top view: y to the right, x up
+  report.plot_vertical = 0;
+  return report;
+}
+
 Scenario CorridorPush::sample_scenario(Rng& rng) const {
   const double half = params_.corridor_range / 2;
   Scenario scenario{{"corridor_offset", rng.uniform(-half, half)}};
@@ -78,7 +89,7 @@ Eigen::RowVectorXd CorridorPush::effector_position() const {
   return gripper_->position().transpose();
 }
 
-std::string CorridorPush::execute(const Eigen::MatrixXd& trajectory) {
+std::string CorridorPush::execute(const std::string&, const Eigen::MatrixXd& trajectory) {
   if (!failure_.empty()) return failure_;
   const TrackingResult result = gripper_->follow(trajectory, [&] {
     if (world_->touching(object_, wall_left_) || world_->touching(object_, wall_right_)) {
@@ -125,7 +136,7 @@ Outcome CorridorPush::outcome() const {
   return {true, ""};
 }
 
-std::string CorridorPush::classify_correction(const Eigen::MatrixXd& trajectory) const {
+std::string CorridorPush::classify_decision(const Eigen::MatrixXd& trajectory) const {
   const double displacement = trajectory(trajectory.rows() - 1, 0) - trajectory(0, 0);
   const double threshold = params_.tolerance / 2;
   if (displacement > threshold) return "push";

@@ -24,14 +24,15 @@ class CorridorPush : public Environment {
   explicit CorridorPush(const CorridorPushParams& params);
   ~CorridorPush() override;
 
+  TaskReport report() const override;
   Scenario sample_scenario(Rng& rng) const override;
   void reset(const Scenario& scenario) override;
   std::vector<SegmentInfo> segments() const override;
   Eigen::RowVectorXd effector_position() const override;
-  std::string execute(const Eigen::MatrixXd& trajectory) override;
+  std::string execute(const std::string& segment, const Eigen::MatrixXd& trajectory) override;
   Observation observe(bool with_image) override;
   Outcome outcome() const override;
-  std::string classify_correction(const Eigen::MatrixXd& trajectory) const override;
+  std::string classify_decision(const Eigen::MatrixXd& trajectory) const override;
 
   const CorridorPushParams& params() const { return params_; }
   // Geometry the expert plans with.

@@ -11,7 +11,7 @@
 #include <vector>
 
 #include "core/seeds.hpp"
-#include "envs/observation.hpp"
+#include "data/observation.hpp"
 
 namespace corrmp {
 
@@ -50,7 +50,9 @@ struct DemonstrationSplit {
 };
 
 // Where demonstrations come from: an expert in a simulated environment, files
-// recorded by a researcher, or a synthetic family of curves.
+// recorded by a researcher, or a synthetic family of curves. What a source can
+// do is declared, so that a config asking for more fails at load, before
+// anything runs (docs/architecture.md, "Load-time checks").
 class Environment;
 
 class DemonstrationSource {
@@ -59,12 +61,20 @@ class DemonstrationSource {
   // Draws (or loads) the demonstrations; `rng` is this component's own stream.
   // `environment` is the experiment's environment, or null when it has none.
   virtual DemonstrationSplit collect(Environment* environment, Rng& rng) = 0;
+  // The segments every demonstration holds; empty when only the data tells.
+  virtual std::vector<std::string> segments() const { return {}; }
+  // Sources whose demonstrations carry their own contexts (no extractor needed).
+  virtual bool provides_contexts() const { return false; }
   // Sources that emulate an expert in an environment need one.
   virtual bool needs_environment() const { return false; }
-  // An expert demonstrates one scenario (the evaluation's reference for the
-  // expected correction and the trajectory errors); other sources cannot.
+  // Whether demonstrate() works: an expert shows one given scenario (the
+  // evaluation's reference for the expected decision and the trajectory errors).
+  virtual bool can_demonstrate() const { return false; }
   virtual Demonstration demonstrate(Environment& environment, const Scenario& scenario,
                                     bool with_images);
+  // Goes into the demonstration cache key: bump it whenever the same
+  // parameters would now give different demonstrations.
+  virtual std::string version() const { return "1"; }
 };
 
 }  // namespace corrmp

@@ -1,5 +1,5 @@
 // Observations and scenarios.
-#include "envs/observation.hpp"
+#include "data/observation.hpp"
 
 #include <fmt/format.h>
 

@@ -1,0 +1,63 @@
+// Context extractor `color_segmentation` (paper, Section IV-C "Knotting with
+// the real robot"): the rope end is found in the head camera's RGB-D image by
+// colour segmentation and clustering, back-projected with the depth and the
+// camera model, and given relative to the gripper mid-point (which the robot
+// knows from its own joints). Where the observation also holds the true
+// relative position, the extractor measures its own accuracy against it.
+#pragma once
+
+#include <string>
+#include <vector>
+
+#include "context/color_segmentation/color_segmentation_params.hpp"
+#include "context/context_extractor.hpp"
+#include "core/config/field_rule.hpp"
+
+namespace corrmp {
+
+struct ColorSegmentationContextParams {
+  std::vector<std::string> segments{"cor"};
+  ColorSegmentationParams segmentation;
+  std::vector<std::string> gripper_state{"gripper_mid_x", "gripper_mid_y", "gripper_mid_z"};
+  std::vector<std::string> truth_state{"rope_end_dx", "rope_end_dy", "rope_end_dz"};
+  int figures = 6;
+
+  template <class Fields>
+  void describe(Fields& f) {
+    f("segments", segments, "segments whose context is the rope end seen at their start");
+    f("segmentation", segmentation, "colour thresholds, cleaning, clustering and camera noise");
+    f("gripper_state", gripper_state,
+      "observation state values of the gripper mid-point [x, y, z] the context is relative to",
+      size_is(3));
+    f("truth_state", truth_state,
+      "observation state values of the true relative rope end, to measure the accuracy "
+      "([] when the observation has none)");
+    f("figures", figures, "head-camera frames written with the segmentation overlaid",
+      in_range(0, 100));
+  }
+};
+
+class ColorSegmentationContext : public ContextExtractor {
+ public:
+  ColorSegmentationContext(const ColorSegmentationContextParams& params, uint64_t noise_seed);
+
+  void fit(const std::vector<Demonstration>&, const ExtractorCache&, Rng&) override {}
+  Eigen::VectorXd extract(const std::string& segment, const Observation& observation) override;
+  std::vector<std::string> segments() const override { return params_.segments; }
+  bool needs_images() const override { return true; }
+  void write_outputs(const std::string& directory,
+                     const std::vector<Demonstration>& demos) override;
+  // context_found_rate, context_error_median_mm and context_error_max_mm
+  // over every extraction so far (demonstrations and evaluation trials).
+  std::vector<std::pair<std::string, double>> metrics() const override;
+
+ private:
+  bool wanted(const std::string& segment) const;
+
+  ColorSegmentationContextParams params_;
+  Rng noise_;
+  int extractions_ = 0, found_ = 0;
+  std::vector<double> errors_m_;
+};
+
+}  // namespace corrmp

@@ -1,0 +1,30 @@
+// One closed-loop evaluation trial as the generic evaluation saw it (paper,
+// Section IV-B): the scenario, what the policy generated and the expert
+// demonstrated for each segment, the contexts the policy was given, the
+// decision and the outcome. Figures and the trial rows are drawn from these.
+#pragma once
+
+#include <Eigen/Core>
+#include <map>
+#include <string>
+
+#include "data/observation.hpp"
+
+namespace corrmp {
+
+struct EvaluatedTrial {
+  int trial = 0;
+  Scenario scenario;
+  bool success = false;
+  std::string failure;  // "" on success
+  std::string expected_action, chosen_action;
+  // Per segment, in the segment's own frame (offsets for relative segments).
+  std::map<std::string, Eigen::MatrixXd> generated, expert;
+  // The effectors' positions where each relative segment started (add them to
+  // the segment's rows for world coordinates).
+  std::map<std::string, Eigen::RowVectorXd> origins;
+  std::map<std::string, Eigen::VectorXd> contexts;  // as the policy was given them
+  std::map<std::string, double> outcome;            // the task's outcome metrics
+};
+
+}  // namespace corrmp

@@ -1,0 +1,13 @@
+// Registration of the corridor_push task's components (paper, Section IV-A).
+#pragma once
+
+#include "core/registry.hpp"
+#include "data/demonstrations.hpp"
+#include "envs/environment.hpp"
+
+namespace corrmp {
+
+void register_corridor_push(Registry<Environment>& environments,
+                            Registry<DemonstrationSource>& demonstrations);
+
+}  // namespace corrmp

@@ -1,0 +1,121 @@
+// Cross-component checks at load (component_checks.hpp).
+#include "experiment/component_checks.hpp"
+
+#include <fmt/format.h>
+
+#include <algorithm>
+
+namespace corrmp {
+
+namespace {
+
+bool contains(const std::vector<std::string>& names, const std::string& name) {
+  return std::find(names.begin(), names.end(), name) != names.end();
+}
+
+std::string listed(const std::vector<std::string>& names) {
+  return names.empty() ? std::string("none") : fmt::format("{}", fmt::join(names, ", "));
+}
+
+struct Located {
+  SourceLocation where;
+  std::string path;
+};
+
+// The first scalar under `node` whose text is `text`, with its key path.
+bool find_scalar(const ConfigNode& node, const std::string& path, const std::string& text,
+                 Located& found) {
+  if (node.is_scalar()) {
+    if (node.text() != text || node.where().file == "<default>") return false;
+    found = {node.where(), path};
+    return true;
+  }
+  if (node.is_sequence()) {
+    int index = 0;
+    for (const auto& item : node.items()) {
+      if (find_scalar(item, fmt::format("{}[{}]", path, index++), text, found)) return true;
+    }
+  }
+  if (node.is_map()) {
+    for (const auto& entry : node.entries()) {
+      if (find_scalar(entry.value, path + "." + entry.key, text, found)) return true;
+    }
+  }
+  return false;
+}
+
+// Where a component section states `value`; its type line when only a
+// default states it.
+Located locate(const ComponentSpec& spec, const std::string& value) {
+  Located found;
+  if (find_scalar(*spec.node, spec.path, value, found)) return found;
+  return {spec.node->find("type")->where(), spec.path + ".type"};
+}
+
+void check_policy_data(const Experiment& e) {
+  const std::vector<std::string> available = e.demonstrations->segments();
+  if (available.empty()) return;  // only the data tells
+  for (const auto& segment : e.policy->data_segments()) {
+    if (contains(available, segment)) continue;
+    const Located at = locate(*e.config.policy, segment);
+    throw ConfigError(
+        at.where, at.path,
+        fmt::format("segment '{}' is not in the demonstrations of '{}' (they hold: {})", segment,
+                    e.config.demonstrations->type, listed(available)));
+  }
+}
+
+void check_policy_contexts(const Experiment& e) {
+  if (e.demonstrations && e.demonstrations->provides_contexts()) return;
+  const std::vector<std::string> given =
+      e.context_extractor ? e.context_extractor->segments() : std::vector<std::string>{};
+  for (const auto& segment : e.policy->context_segments()) {
+    if (contains(given, segment)) continue;
+    const Located at = locate(*e.config.policy, segment);
+    const std::string source =
+        e.context_extractor
+            ? fmt::format("the context extractor '{}' gives none for it (it gives: {})",
+                          e.config.context->type, listed(given))
+            : std::string("there is no context section");
+    throw ConfigError(at.where, at.path,
+                      fmt::format("segment '{}' is conditioned on a context, but {}; add it to "
+                                  "the context or set use_context: false",
+                                  segment, source));
+  }
+}
+
+void check_extractor_segments(const Experiment& e) {
+  if (!e.demonstrations) return;
+  const std::vector<std::string> available = e.demonstrations->segments();
+  if (available.empty()) return;
+  for (const auto& segment : e.context_extractor->segments()) {
+    if (contains(available, segment)) continue;
+    const Located at = locate(*e.config.context, segment);
+    throw ConfigError(
+        at.where, at.path,
+        fmt::format("segment '{}' is not in the demonstrations of '{}' (they hold: {})", segment,
+                    e.config.demonstrations->type, listed(available)));
+  }
+}
+
+void check_expert(const Experiment& e) {
+  if (e.demonstrations->can_demonstrate()) return;
+  const ConfigNode* type = e.config.demonstrations->node->find("type");
+  throw ConfigError(type->where(), "demonstrations.type",
+                    fmt::format("'{}' cannot demonstrate evaluation scenarios, which an "
+                                "evaluation in the environment '{}' needs: use the task's expert",
+                                e.config.demonstrations->type, e.config.environment->type));
+}
+
+}  // namespace
+
+void check_components(const Experiment& experiment) {
+  if (experiment.policy && experiment.demonstrations) check_policy_data(experiment);
+  if (experiment.context_extractor) check_extractor_segments(experiment);
+  if (experiment.policy) check_policy_contexts(experiment);
+  if (experiment.environment && experiment.demonstrations && experiment.policy) {
+    check_expert(experiment);
+  }
+}
+
+}  // namespace corrmp

@@ -1,0 +1,33 @@
+// The run metrics and the printed tables of a closed-loop evaluation, made
+// from what the task declares (TaskReport): the decision table (the paper's
+// Table I: action choice, decision match and task success per expected
+// decision), the trajectory errors of the error segments (Table II, mean and
+// max in the task's unit) and the rates of the task's outcome metrics, with
+// the trials' failures counted by reason.
+#pragma once
+
+#include <map>
+#include <string>
+#include <vector>
+
+#include "cnmp/cnmp_trainer.hpp"
+#include "data/evaluated_trial.hpp"
+#include "envs/environment.hpp"
+#include "store/result_store.hpp"
+
+namespace corrmp {
+
+// task_success_rate; with decision labels decision_match_rate and, per
+// label L expected at least once, expected_L, decision_match_rate_L and
+// task_success_rate_L; <segment>_mp_error_mean_<unit> and ..._max_<unit>;
+// <metric>_rate for each outcome metric (its mean over the trials);
+// failures_<category> (spaces as '_') for each failure category.
+std::vector<MetricRecord> evaluation_metrics(const TaskReport& task,
+                                             const std::vector<EvaluatedTrial>& trials,
+                                             const std::map<std::string, TrajectoryError>& errors);
+
+std::string evaluation_tables(const TaskReport& task, const std::vector<EvaluatedTrial>& trials,
+                              const std::map<std::string, TrajectoryError>& errors,
+                              const std::string& label);
+
+}  // namespace corrmp

@@ -1,0 +1,52 @@
+// Tests of the rope-end segmentation parameters (paper, Section IV-C): read strictly from
+// YAML, out-of-range values rejected by the config reader and by validate().
+#include "context/color_segmentation/color_segmentation_params.hpp"
+
+#include <gtest/gtest.h>
+
+#include <stdexcept>
+
+#include "core/config/config_reader.hpp"
+
+namespace corrmp {
+namespace {
+
+ColorSegmentationParams read_text(const std::string& text) {
+  ConfigNode root = ConfigNode::parse(text, "segmentation.yaml");
+  ColorSegmentationParams params;
+  ConfigReader::read(root, "", params);
+  return params;
+}
+
+TEST(ColorSegmentationParams, ReadsFromYamlAndKeepsDefaults) {
+  const ColorSegmentationParams params =
+      read_text("hue_centre: 350\nmorphology_kernel: 5\nsurface_offset: 0.004\n");
+  EXPECT_DOUBLE_EQ(params.hue_centre, 350.0);
+  EXPECT_EQ(params.morphology_kernel, 5);
+  EXPECT_DOUBLE_EQ(params.surface_offset, 0.004);
+  EXPECT_DOUBLE_EQ(params.hue_half_width, ColorSegmentationParams().hue_half_width);
+  EXPECT_NO_THROW(params.validate());
+}
+
+TEST(ColorSegmentationParams, ConfigRejectsOutOfRangeAndUnknown) {
+  EXPECT_THROW(read_text("saturation_min: 1.5\n"), ConfigError);
+  EXPECT_THROW(read_text("cluster: smallest\n"), ConfigError);
+  EXPECT_THROW(read_text("hue_center: 10\n"), ConfigError);
+}
+
+TEST(ColorSegmentationParams, ValidateNamesTheBadField) {
+  ColorSegmentationParams params;
+  params.morphology_kernel = 2;
+  try {
+    params.validate();
+    FAIL() << "an even kernel was accepted";
+  } catch (const std::invalid_argument& error) {
+    EXPECT_NE(std::string(error.what()).find("morphology_kernel"), std::string::npos);
+  }
+  params = ColorSegmentationParams();
+  params.depth_noise_std = -0.1;
+  EXPECT_THROW(params.validate(), std::invalid_argument);
+}
+
+}  // namespace
+}  // namespace corrmp

@@ -1,0 +1,101 @@
+// Tests of the soft-body rope of the knotting task (paper, Section IV-C): it
+// keeps its length hanging under gravity, its self-contact pass keeps crossing
+// pieces apart, and a trial replays bitwise.
+#include "sim/soft/rope.hpp"
+
+#include <gtest/gtest.h>
+
+#include "sim/soft/soft_world.hpp"
+
+namespace corrmp {
+namespace {
+
+TEST(Rope, KeepsLengthAndLinksHangingUnderGravity) {
+  SoftWorld world(SoftWorldParams{});
+  RopeParams params;
+  params.length = 0.5;
+  params.nodes = 51;
+  Rope rope(world, params, straight_rope(params, {0, 0, 1}, {1, 0, 0}));
+  rope.pin(0, true);
+  for (int t = 0; t < 1200; ++t) world.step();
+  EXPECT_EQ(world.blow_up(), "");
+  EXPECT_NEAR(rope.node(0).z(), 1.0, 1e-6);
+  // The rope swung down: its free end is now well below the pin.
+  EXPECT_LT(rope.node(50).z(), 0.7);
+  EXPECT_NEAR(rope.length(), 0.5, 0.5 * 0.03);
+  for (int i = 0; i < 50; ++i) {
+    EXPECT_NEAR((rope.node(i + 1) - rope.node(i)).norm(), 0.01, 0.003) << "link " << i;
+  }
+}
+
+TEST(Rope, EndPointIsTheCentroidOfTheColouredEnd) {
+  SoftWorld world(SoftWorldParams{});
+  RopeParams params;
+  params.length = 0.5;
+  params.nodes = 51;
+  params.end_length = 0.05;
+  Rope rope(world, params, straight_rope(params, {0, 0, 1}, {1, 0, 0}));
+  EXPECT_EQ(rope.first_end_node(), 45);
+  EXPECT_NEAR(rope.end_point().x(), 0.475, 1e-6);
+}
+
+// Two pieces of rope pinned at both ends cross each other; the upper one falls
+// onto the lower one. With the self-contact pass they stay two radii apart.
+double closest_crossing_distance() {
+  SoftWorld world(SoftWorldParams{});
+  RopeParams params;
+  params.length = 0.6;
+  params.nodes = 61;
+  // One rope: a straight piece along x at z = 1, a U-turn, then a piece along y
+  // 3 cm above it that falls onto the first.
+  std::vector<Eigen::Vector3d> positions;
+  for (int i = 0; i < 61; ++i) {
+    if (i <= 25)
+      positions.emplace_back(-0.125 + 0.01 * i, 0.0, 1.0);
+    else if (i <= 35)
+      positions.emplace_back(0.125, 0.0, 1.0 + 0.003 * (i - 25));
+    else
+      positions.emplace_back(0.0, -0.125 + 0.01 * (i - 36), 1.03);
+  }
+  Rope rope(world, params, positions);
+  for (int i : {0, 25, 36, 60}) rope.pin(i, true);
+  double closest = 1e9;
+  for (int t = 0; t < 600; ++t) {
+    world.step();
+    for (int i = 0; i < 25; ++i) {
+      for (int j = 36; j < 61; ++j)
+        closest = std::min(closest, (rope.node(i) - rope.node(j)).norm());
+    }
+  }
+  EXPECT_EQ(world.blow_up(), "");
+  return closest;
+}
+
+TEST(Rope, SelfContactKeepsCrossingPiecesApart) {
+  // Node-to-node distance at a crossing of two segments is at least the
+  // segment distance; two radii = 1 cm, allow 2 mm of penetration.
+  EXPECT_GT(closest_crossing_distance(), 0.008);
+}
+
+TEST(Rope, TwoRunsAreBitwiseEqual) {
+  auto run = [] {
+    SoftWorld world(SoftWorldParams{});
+    RopeParams params;
+    Rope rope(world, params, straight_rope(params, {-0.4, 0, 1}, {1, 0, 0.2}));
+    world.add_bar("bar", {0, 0, 0.9}, 0.0125, 0.4, 1.0);
+    rope.pin(0, true);
+    for (int t = 0; t < 900; ++t) world.step();
+    return rope.nodes();
+  };
+  const auto a = run();
+  const auto b = run();
+  ASSERT_EQ(a.size(), b.size());
+  for (size_t i = 0; i < a.size(); ++i) {
+    EXPECT_EQ(a[i].x(), b[i].x());
+    EXPECT_EQ(a[i].y(), b[i].y());
+    EXPECT_EQ(a[i].z(), b[i].z());
+  }
+}
+
+}  // namespace
+}  // namespace corrmp
