@@ -21,10 +21,11 @@ struct EvaluatedTrial {
   // Per segment, in the segment's own frame (offsets for relative segments).
   std::map<std::string, Eigen::MatrixXd> generated, expert;
   // The effectors' positions where each relative segment started (add them to
-  // the segment's rows for world coordinates).
+  // the segment's position columns for world coordinates).
   std::map<std::string, Eigen::RowVectorXd> origins;
   std::map<std::string, Eigen::VectorXd> contexts;  // as the policy was given them
   std::map<std::string, double> outcome;            // the task's outcome metrics
+  std::map<std::string, double> details;            // the task's further values
 };
 
 }  // namespace corrmp

@@ -32,6 +32,9 @@ struct Outcome {
   // The task's named outcome measurements (TaskReport::outcome_metrics), each
   // averaged over the trials into the run metric <name>_rate.
   std::map<std::string, double> metrics;
+  // Further values of this trial kept in its database row (not averaged),
+  // such as the true rope-end offset at the critical point.
+  std::map<std::string, double> details;
 };
 
 // What a task reports. Trajectories are in the task's own unit (metres for the
@@ -78,6 +81,17 @@ class Environment {
   // The effectors' current positions (one row, trajectory columns): where the
   // next absolute segment starts.
   virtual Eigen::RowVectorXd effector_position() const = 0;
+  // The first row of `segment`'s trajectory from the current state: the
+  // effectors' positions, or zero offsets for a relative segment (a task
+  // whose relative rows also carry absolute values, such as a gripper's
+  // opening, overrides this).
+  virtual Eigen::RowVectorXd segment_start(const std::string& segment) const {
+    const Eigen::RowVectorXd position = effector_position();
+    for (const auto& s : segments()) {
+      if (s.name == segment && s.relative) return Eigen::RowVectorXd::Zero(position.size());
+    }
+    return position;
+  }
   // Tracks the trajectory of `segment` (rows: trajectory columns; offsets
   // when the segment is relative; a segment the task does not list, such as
   // a whole-skill "full", is absolute). Returns "" on success or why

@@ -36,13 +36,14 @@ int total_points(const std::vector<SegmentInfo>& segments) {
 // queried over each segment's span in the reference demonstration's timing,
 // between the critical points the expert passed at its nominal tempo. What
 // is executed is the policy's own uniform query; this only reads it.
+// A relative segment is read as offsets from where the policy's span starts.
 void split_at_reference_phases(Policy& policy, const std::string& whole,
                                const std::vector<SegmentInfo>& segments,
                                const Demonstration& reference, const Eigen::MatrixXd& start,
-                               const Eigen::VectorXd& context, SegmentPaths& out) {
+                               const Eigen::VectorXd& context, EvaluatedTrial& out) {
   for (const auto& s : segments) {
     const SegmentTrajectory* demonstrated = reference.find(s.name);
-    if (demonstrated == nullptr || s.relative) continue;
+    if (demonstrated == nullptr) continue;
     if (!std::isfinite(demonstrated->phase_begin) || !std::isfinite(demonstrated->phase_end)) {
       throw std::runtime_error(fmt::format(
           "the reference demonstration's segment '{}' has no span in the whole skill, so the "
@@ -51,7 +52,12 @@ void split_at_reference_phases(Policy& policy, const std::string& whole,
     }
     const Eigen::MatrixXd query =
         Eigen::VectorXd::LinSpaced(s.points, demonstrated->phase_begin, demonstrated->phase_end);
-    out[s.name] = policy.generate(whole, start, context, query).mean;
+    Eigen::MatrixXd path = policy.generate(whole, start, context, query).mean;
+    if (s.relative) {
+      out.origins[s.name] = path.row(0);
+      path.rowwise() -= out.origins[s.name];
+    }
+    out.generated[s.name] = path;
   }
 }
 
@@ -63,13 +69,14 @@ Eigen::MatrixXd error_columns_of(const Eigen::MatrixXd& path, const std::vector<
 }
 
 std::string details_json(const EvaluatedTrial& trial) {
-  JsonObject contexts, outcome;
+  JsonObject contexts, outcome, values;
   for (const auto& [segment, context] : trial.contexts) {
     contexts.add(segment, std::vector<double>(context.data(), context.data() + context.size()));
   }
   for (const auto& [name, value] : trial.outcome) outcome.add(name, value);
+  for (const auto& [name, value] : trial.details) values.add(name, value);
   JsonObject details;
-  details.add("contexts", contexts).add("outcome", outcome);
+  details.add("contexts", contexts).add("outcome", outcome).add("values", values);
   return details.str();
 }
 
@@ -99,19 +106,17 @@ EvaluatedTrial run_trial(int index, const Scenario& scenario, Environment& envir
         extractor != nullptr ? extractor->extract(segment, observation) : Eigen::VectorXd();
     if (context.size() > 0) trial.contexts[segment] = context;
     const SegmentInfo* info = find_segment(env_segments, segment);
-    const Eigen::RowVectorXd position = environment.effector_position();
-    const bool relative = info != nullptr && info->relative;
-    Eigen::MatrixXd start(1, 1 + position.size());
-    start << 0.0, (relative ? Eigen::RowVectorXd::Zero(position.size()) : position);
+    const Eigen::RowVectorXd start_row = environment.segment_start(segment);
+    Eigen::MatrixXd start(1, 1 + start_row.size());
+    start << 0.0, start_row;
     const int points = info != nullptr ? info->points : total_points(env_segments);
     const Eigen::MatrixXd query = Eigen::VectorXd::LinSpaced(points, 0.0, 1.0);
     const Eigen::MatrixXd path = policy.generate(segment, start, context, query).mean;
     if (info == nullptr) {
-      split_at_reference_phases(policy, segment, env_segments, reference, start, context,
-                                trial.generated);
+      split_at_reference_phases(policy, segment, env_segments, reference, start, context, trial);
     } else {
       trial.generated[segment] = path;
-      if (relative) trial.origins[segment] = position;
+      if (info->relative) trial.origins[segment] = environment.effector_position();
     }
     failure = environment.execute(segment, path);
     if (!failure.empty()) break;
@@ -120,6 +125,7 @@ EvaluatedTrial run_trial(int index, const Scenario& scenario, Environment& envir
   trial.success = failure.empty() && outcome.success;
   trial.failure = trial.success ? "" : (failure.empty() ? outcome.failure : failure);
   trial.outcome = outcome.metrics;
+  trial.details = outcome.details;
   if (!task.decision_labels.empty() && trial.generated.count(task.decision_segment)) {
     trial.chosen_action = environment.classify_decision(trial.generated[task.decision_segment]);
   }

@@ -120,9 +120,6 @@ void run_stages(Experiment& experiment, const fs::path& dir, const RunOptions& o
     const bool cache_extractor = !key.empty() && options.use_cache;
     experiment.context_extractor->fit(all, {cache_extractor ? cache_dir.string() : "", key},
                                       context_rng);
-    for (const auto& [name, value] : experiment.context_extractor->metrics()) {
-      metrics.push_back({name, value});
-    }
     assign_contexts(*experiment.context_extractor, demos.train);
     assign_contexts(*experiment.context_extractor, demos.validation);
     experiment.context_extractor->write_outputs(dir.string(), demos.validation);
@@ -205,6 +202,12 @@ RunResult run_pipeline(Experiment& experiment, const RunOptions& options) {
     spdlog::info("run {} of '{}' in {}", result.run_id, experiment.config.experiment.name,
                  dir.string());
     run_stages(experiment, dir, options, trials, metrics);
+    // Read last: an extractor may measure itself on every context it gave.
+    if (experiment.context_extractor) {
+      for (const auto& [name, value] : experiment.context_extractor->metrics()) {
+        metrics.push_back({name, value});
+      }
+    }
     store.complete_run(result.run_id, trials, metrics);
     result.status = "completed";
   } catch (const Interrupted& e) {

@@ -30,9 +30,36 @@ std::string percent_text(const double* rate) {
   return rate ? fmt::format("{:.0f}%", 100 * *rate) : "-";
 }
 
-std::string pair_text(const RunSummary& run, const std::string& prefix) {
-  const double* mean = metric(run, prefix + "_error_mean_cm");
-  const double* max = metric(run, prefix + "_error_max_cm");
+// A trajectory error the runs recorded: <segment>_mp_error_mean_<unit>.
+struct ErrorColumn {
+  std::string segment, unit;
+  std::string mean() const { return segment + "_mp_error_mean_" + unit; }
+  std::string max() const { return segment + "_mp_error_max_" + unit; }
+  std::string heading() const { return fmt::format("{}-MP error mean / max ({})", segment, unit); }
+};
+
+// Every error the runs recorded, in the order the first run recording it did
+// (the task's order of segments).
+std::vector<ErrorColumn> error_columns(const std::vector<RunSummary>& runs) {
+  static const std::string kMarker = "_mp_error_mean_";
+  std::vector<ErrorColumn> columns;
+  for (const auto& run : runs) {
+    for (const auto& name : run.metric_order) {
+      const auto at = name.find(kMarker);
+      if (at == std::string::npos || at == 0) continue;
+      ErrorColumn column{name.substr(0, at), name.substr(at + kMarker.size())};
+      const bool known = std::any_of(columns.begin(), columns.end(), [&](const ErrorColumn& c) {
+        return c.mean() == column.mean();
+      });
+      if (!known) columns.push_back(column);
+    }
+  }
+  return columns;
+}
+
+std::string pair_text(const RunSummary& run, const ErrorColumn& column) {
+  const double* mean = metric(run, column.mean());
+  const double* max = metric(run, column.max());
   if (!mean && !max) return "-";
   return number(mean) + " / " + number(max);
 }
@@ -52,7 +79,8 @@ std::string varies_text(const RunSummary& run,
 
 // The paper's rows (assets/paper/tables.yaml), as report cells.
 struct PaperRow {
-  std::string label, success, decision, cor, post;
+  std::string label, success, decision;
+  std::map<std::string, std::string> errors;  // by the error column's mean metric
 };
 
 std::vector<PaperRow> paper_rows(const std::string& tables_path) {
@@ -70,13 +98,15 @@ std::vector<PaperRow> paper_rows(const std::string& tables_path) {
       matched += count * entry.second.as<double>();
       expected += count;
     }
-    auto pair = [&](const char* name) {
-      return fmt::format("{:.2f} / {:.2f}", t2[name][0].as<double>(), t2[name][1].as<double>());
-    };
-    rows.push_back({fmt::format("paper: {}", key),
-                    fmt::format("{} of {}", t1["task_success"].as<int>(), expected),
-                    fmt::format("{:.0f}%", 100 * matched / expected), pair("cor_mp"),
-                    pair("post_mp")});
+    PaperRow row{fmt::format("paper: {}", key),
+                 fmt::format("{} of {}", t1["task_success"].as<int>(), expected),
+                 fmt::format("{:.0f}%", 100 * matched / expected),
+                 {}};
+    for (const auto& entry : t2) {  // cor_mp: [mean, max] in cm
+      row.errors[entry.first.as<std::string>() + "_error_mean_cm"] = fmt::format(
+          "{:.2f} / {:.2f}", entry.second[0].as<double>(), entry.second[1].as<double>());
+    }
+    rows.push_back(row);
   }
   return rows;
 }
@@ -99,29 +129,45 @@ std::string csv_cell(const std::string& text) {
 
 std::string report_markdown(const std::vector<RunSummary>& runs, const ReportFormat& format) {
   const auto varying = varying_settings(runs);
-  std::string out =
-      "| run | experiment | varies | task success | decision match | "
-      "cor-MP error mean / max (cm) | post-MP error mean / max (cm) |";
-  std::string rule = "|---|---|---|---|---|---|---|";
+  std::vector<PaperRow> paper;
+  if (!format.paper_tables.empty()) paper = paper_rows(format.paper_tables);
+  std::vector<ErrorColumn> errors = error_columns(runs);
+  for (const auto& row : paper) {  // the paper's errors get their columns too
+    for (const auto& [mean, text] : row.errors) {
+      const bool known = std::any_of(errors.begin(), errors.end(),
+                                     [&](const ErrorColumn& c) { return c.mean() == mean; });
+      const auto at = mean.find("_mp_error_mean_");
+      if (!known) errors.push_back({mean.substr(0, at), mean.substr(at + 15)});
+    }
+  }
+  std::string out = "| run | experiment | varies | task success | decision match |";
+  std::string rule = "|---|---|---|---|---|";
+  for (const auto& column : errors) {
+    out += " " + column.heading() + " |";
+    rule += "---|";
+  }
   for (const auto& name : format.extra_metrics) {
     out += " " + name + " |";
     rule += "---|";
   }
   out += "\n" + rule + "\n";
   for (const auto& run : runs) {
-    out += fmt::format("| {} | {} | {} | {} | {} | {} | {} |", run.id,
-                       markdown_cell(run.experiment), markdown_cell(varies_text(run, varying)),
-                       success_text(run), percent_text(metric(run, "decision_match_rate")),
-                       pair_text(run, "cor_mp"), pair_text(run, "post_mp"));
+    out += fmt::format("| {} | {} | {} | {} | {} |", run.id, markdown_cell(run.experiment),
+                       markdown_cell(varies_text(run, varying)), success_text(run),
+                       percent_text(metric(run, "decision_match_rate")));
+    for (const auto& column : errors) out += " " + pair_text(run, column) + " |";
     for (const auto& name : format.extra_metrics) {
       out += " " + number(metric(run, name), "{:.4g}") + " |";
     }
     out += "\n";
   }
-  if (!format.paper_tables.empty()) {
-    for (const auto& row : paper_rows(format.paper_tables)) {
-      out += fmt::format("| | {} | | {} | {} | {} | {} |", row.label, row.success, row.decision,
-                         row.cor, row.post);
+  {
+    for (const auto& row : paper) {
+      out += fmt::format("| | {} | | {} | {} |", row.label, row.success, row.decision);
+      for (const auto& column : errors) {
+        const auto cell = row.errors.find(column.mean());
+        out += " " + (cell == row.errors.end() ? std::string() : cell->second) + " |";
+      }
       for (size_t i = 0; i < format.extra_metrics.size(); ++i) out += " |";
       out += "\n";
     }
@@ -131,9 +177,11 @@ std::string report_markdown(const std::vector<RunSummary>& runs, const ReportFor
 
 std::string report_csv(const std::vector<RunSummary>& runs, const ReportFormat& format) {
   const auto varying = varying_settings(runs);
-  std::vector<std::string> columns{"task_success_rate",     "decision_match_rate",
-                                   "cor_mp_error_mean_cm",  "cor_mp_error_max_cm",
-                                   "post_mp_error_mean_cm", "post_mp_error_max_cm"};
+  std::vector<std::string> columns{"task_success_rate", "decision_match_rate"};
+  for (const auto& column : error_columns(runs)) {
+    columns.push_back(column.mean());
+    columns.push_back(column.max());
+  }
   columns.insert(columns.end(), format.extra_metrics.begin(), format.extra_metrics.end());
   std::string out = "run,experiment,status,varies,trials";
   for (const auto& c : columns) out += "," + csv_cell(c);

@@ -78,11 +78,16 @@ std::vector<RunSummary> load_run_summaries(ResultStore& store, const ReportQuery
     runs.push_back(std::move(run));
   }
 
-  Statement metrics(store.handle(), "SELECT name, value FROM metrics WHERE run_id = ?");
+  Statement metrics(store.handle(),
+                    "SELECT name, value FROM metrics WHERE run_id = ? ORDER BY rowid");
   Statement trials(store.handle(), "SELECT COUNT(*) FROM trials WHERE run_id = ?");
   for (RunSummary& run : runs) {
     metrics.bind(1, run.id);
-    while (metrics.step()) run.metrics[metrics.column_text(0)] = metrics.column_double(1);
+    while (metrics.step()) {
+      const std::string name = metrics.column_text(0);
+      if (!run.metrics.count(name)) run.metric_order.push_back(name);
+      run.metrics[name] = metrics.column_double(1);
+    }
     metrics.reset();
     trials.bind(1, run.id);
     if (trials.step()) run.trials = static_cast<int>(trials.column_int(0));

@@ -19,6 +19,7 @@ struct RunSummary {
   int trials = 0;
   std::map<std::string, std::string> settings;  // the resolved config, flattened
   std::map<std::string, double> metrics;
+  std::vector<std::string> metric_order;  // the names as the run recorded them
 };
 
 struct ReportQuery {

@@ -42,4 +42,10 @@ RgbdImage HeadCamera::capture(const BulletWorld& world) {
   return renderer_.render(render_scene_of(world, background), world_from_camera_);
 }
 
+RgbdImage HeadCamera::capture(RenderScene scene) {
+  scene.background =
+      Eigen::Vector3f(params_.background[0], params_.background[1], params_.background[2]);
+  return renderer_.render(scene, world_from_camera_);
+}
+
 }  // namespace corrmp

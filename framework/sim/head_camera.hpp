@@ -25,9 +25,9 @@ struct HeadCameraParams {
     f("width", width, "image width (px)", in_range(8, 2048));
     f("height", height, "image height (px)", in_range(8, 2048));
     f("vertical_fov_deg", vertical_fov_deg, "vertical field of view (deg)", in_range(5, 170));
-    f("eye", eye, "camera position [x, y, z] (m)");
-    f("target", target, "point the camera looks at [x, y, z] (m)");
-    f("background", background, "RGB of empty space", in_range(0.0, 1.0));
+    f("eye", eye, "camera position [x, y, z] (m)", size_is(3));
+    f("target", target, "point the camera looks at [x, y, z] (m)", size_is(3));
+    f("background", background, "RGB of empty space", size_is(3).at_least(0.0).at_most(1.0));
   }
 };
 
@@ -38,6 +38,9 @@ class HeadCamera {
  public:
   explicit HeadCamera(const HeadCameraParams& params);
   RgbdImage capture(const BulletWorld& world);
+  // Any scene, for worlds that draw themselves (soft bodies); its background
+  // is replaced by the camera's.
+  RgbdImage capture(RenderScene scene);
   const Eigen::Isometry3d& world_from_camera() const { return world_from_camera_; }
   const CameraIntrinsics& intrinsics() const { return renderer_.intrinsics(); }
 

@@ -21,11 +21,12 @@ struct GripperParams {
 
   template <class Fields>
   void describe(Fields& f) {
-    f("finger_size", finger_size, "finger box [x, y, z] (m); fingers close along x", positive());
-    f("palm_size", palm_size, "palm box [x, y, z] (m)", positive());
+    f("finger_size", finger_size, "finger box [x, y, z] (m); fingers close along x",
+      size_is(3).above(0.0));
+    f("palm_size", palm_size, "palm box [x, y, z] (m)", size_is(3).above(0.0));
     f("opening", opening, "gap between open fingers (m)", at_least(0.0));
     f("max_speed", max_speed, "largest tool speed (m/s)", positive());
-    f("colour", colour, "RGB in [0, 1]", in_range(0.0, 1.0));
+    f("colour", colour, "RGB in [0, 1]", size_is(3).at_least(0.0).at_most(1.0));
   }
 };
 

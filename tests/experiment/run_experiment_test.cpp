@@ -54,7 +54,8 @@ TEST(RunExperiment, MalformedConfigsGiveOneLineExitTwoAndNoDatabaseWrites) {
        "bad.yaml:2:45: demonstrations.train: value 0 is out of range: must be >= 1"},
       {"experiment: {name: a}\ndemonstrations: {type: curve_famly}\n",
        "bad.yaml:2:24: demonstrations.type: unknown demonstration source 'curve_famly' (did you "
-       "mean 'curve_family'?); valid: corridor_expert, curve_family, trajectory_files"},
+       "mean 'curve_family'?); valid: corridor_expert, rope_expert, curve_family, "
+       "trajectory_files"},
       {"experiment: {name: 'a/b'}\n", "bad.yaml:1:20: experiment.name: 'a/b' is not a valid name"},
       {"experiment: {name: a\n", "bad.yaml:2:1: YAML syntax error"},
   };
@@ -82,6 +83,58 @@ TEST(RunExperiment, MalformedConfigsGiveOneLineExitTwoAndNoDatabaseWrites) {
   EXPECT_EQ(run(dir, "--no-such-flag").exit_code, 2);
   EXPECT_EQ(run(dir, dir.file("missing.yaml")).exit_code, 2);
   EXPECT_FALSE(std::filesystem::exists(dir.file("r.sqlite")));
+}
+
+// What one component asks of another is checked at load: exit 2 with the
+// file, line and key path of the offending value, before any run is recorded.
+TEST(RunExperiment, MismatchedComponentsAreConfigErrors) {
+  TempDir dir;
+  const std::string corridor = std::string(PROJECT_DIR) + "/configs/corridor_pc.yaml";
+  const std::vector<std::pair<std::string, std::string>> cases = {
+      {corridor + " policy.segments.1.name=corr",
+       "policy.segments[1].name: segment 'corr' is not in the demonstrations of "
+       "'corridor_expert' (they hold: pre, cor, post, full)"},
+      {corridor + " 'context.segments=[{segment: cor, state: [corridor_x]}]'",
+       "corridor_pc.yaml:17:14: policy.segments[2].name: segment 'post' is conditioned on a "
+       "context, but the context extractor 'perfect' gives none for it (it gives: cor)"},
+      {corridor + " 'context.segments=[{segment: postt, state: [object_x]}]'",
+       "context.segments[0].segment: segment 'postt' is not in the demonstrations"},
+      {std::string(PROJECT_DIR) + "/configs/corridor_ae.yaml 'context.segments=[cor, postt]'",
+       "context.segments[1]: segment 'postt' is not in the demonstrations of 'corridor_expert'"},
+      {std::string(PROJECT_DIR) +
+           "/configs/corridor_mono.yaml 'policy.matched_segments=[pre, cor, pst]'",
+       "policy.matched_segments[2]: segment 'pst' is not in the demonstrations"},
+      {dir.write("no_expert.yaml",
+                 "experiment: {name: a}\nenvironment: {type: corridor_push}\n"
+                 "demonstrations: {type: curve_family}\npolicy: {type: segmented_cnmp}\n"),
+       "no_expert.yaml:3:24: demonstrations.type: 'curve_family' cannot demonstrate evaluation "
+       "scenarios"},
+      {dir.write("no_context.yaml",
+                 "experiment: {name: a}\nenvironment: {type: rope_knot}\n"
+                 "demonstrations: {type: rope_expert}\npolicy:\n  type: segmented_cnmp\n"
+                 "  segments: [{name: cor}]\n"),
+       "no_context.yaml:6:21: policy.segments[0].name: segment 'cor' is conditioned on a "
+       "context, but there is no context section"},
+      {std::string(PROJECT_DIR) + "/configs/rope_color.yaml context.segmentation.cluster=all",
+       "context.segmentation.cluster: 'all' is not allowed: must be one of largest"},
+      {std::string(PROJECT_DIR) +
+           "/configs/rope_color.yaml 'context.gripper_state=[gripper_mid_x]'",
+       "context.gripper_state: expected a list of 3 items, got 1"},
+      {std::string(PROJECT_DIR) + "/configs/rope_color.yaml environment.rope.nodes=1",
+       "environment.rope.nodes"},
+      {corridor + " 'environment.gripper.palm_size=[]'",
+       "environment.gripper.palm_size: expected a list of 3 items, got 0"},
+      {std::string(PROJECT_DIR) + "/configs/corridor_ae.yaml 'environment.camera.eye=[1, 2]'",
+       "environment.camera.eye: expected a list of 3 items, got 2"},
+  };
+  for (const auto& [args, expected] : cases) {
+    const Outcome outcome = run(dir, args);
+    EXPECT_EQ(outcome.exit_code, 2) << args << "\n" << outcome.err;
+    EXPECT_NE(outcome.err.find(expected), std::string::npos)
+        << "expected: " << expected << "\ngot: " << outcome.err;
+    EXPECT_EQ(std::count(outcome.err.begin(), outcome.err.end(), '\n'), 1) << outcome.err;
+    EXPECT_FALSE(std::filesystem::exists(dir.file("r.sqlite"))) << args;
+  }
 }
 
 TEST(RunExperiment, PrintConfigShowsEveryResolvedValue) {
@@ -229,6 +282,74 @@ TEST(RunExperiment, ATinyAutoencoderRunWritesItsFiguresModelAndTestError) {
   EXPECT_EQ(store.query_int("SELECT COUNT(*) FROM (SELECT name, value FROM metrics WHERE run_id = "
                             "1 EXCEPT SELECT name, value FROM metrics WHERE run_id = 2)"),
             0);
+}
+
+// A cache file that cannot be read is reported and collected again;
+// --no-cache collects afresh. Both give the same results as the first run.
+TEST(RunExperiment, AnUnreadableCacheIsCollectedAgain) {
+  TempDir dir;
+  const std::string args = std::string(PROJECT_DIR) +
+                           "/configs/corridor_pc.yaml demonstrations.train=4 "
+                           "demonstrations.validation=2 policy.training.updates=100 "
+                           "policy.training.validate_every=50 policy.network.width=8 "
+                           "evaluation.trials=1";
+  ASSERT_EQ(run(dir, args).exit_code, 0);
+  std::vector<std::filesystem::path> caches;
+  for (const auto& entry : std::filesystem::directory_iterator(dir.file("runs/cache"))) {
+    caches.push_back(entry.path());
+  }
+  ASSERT_EQ(caches.size(), 1u);
+  std::ofstream(caches[0], std::ios::binary | std::ios::trunc) << "CMPD broken";
+  const Outcome second = run(dir, args);
+  ASSERT_EQ(second.exit_code, 0) << second.err;
+  EXPECT_NE(second.err.find("collecting the demonstrations again"), std::string::npos)
+      << second.err;
+  const Outcome third = run(dir, args + " --no-cache");
+  ASSERT_EQ(third.exit_code, 0) << third.err;
+  ResultStore store(dir.file("r.sqlite"));
+  EXPECT_EQ(read_file(store.query_text("SELECT out_dir FROM runs WHERE id = 3") + "/log.txt")
+                .find("reusing cached demonstrations"),
+            std::string::npos);
+  for (int run_id : {2, 3}) {
+    EXPECT_EQ(store.query_int("SELECT COUNT(*) FROM (SELECT name, value FROM metrics WHERE "
+                              "run_id = 1 EXCEPT SELECT name, value FROM metrics WHERE run_id = " +
+                              std::to_string(run_id) + ")"),
+              0);
+  }
+}
+
+// The rope task end to end at a tiny size: the colour-segmented context,
+// the trial rows with their contexts, true offsets and outcomes, the figures.
+TEST(RunExperiment, ATinyRopeRunRecordsKnotOutcomesAndContexts) {
+  TempDir dir;
+  const Outcome outcome =
+      run(dir, std::string(PROJECT_DIR) +
+                   "/configs/rope_color.yaml demonstrations.train=3 demonstrations.validation=1 "
+                   "policy.training.updates=200 policy.training.validate_every=100 "
+                   "policy.network.width=16 evaluation.trials=2");
+  ASSERT_EQ(outcome.exit_code, 0) << outcome.err;
+  EXPECT_NE(outcome.out.find("Table I (rope_color)"), std::string::npos) << outcome.out;
+  EXPECT_NE(outcome.out.find("knot"), std::string::npos) << outcome.out;
+  ResultStore store(dir.file("r.sqlite"));
+  EXPECT_EQ(
+      store.query_int("SELECT COUNT(*) FROM trials WHERE run_id = 1 AND details LIKE "
+                      "'%\"contexts\":{\"cor\":[%' AND details LIKE '%critical_end_dx%' "
+                      "AND scenario LIKE '%grasp_offset%' AND (success = 1 OR failure <> '')"),
+      2);
+  for (const char* name :
+       {"task_success_rate", "knot_rate", "enclosed_rate", "context_error_median_mm",
+        "context_found_rate", "cor_mp_error_mean_cm", "failures_missed_enclose"}) {
+    EXPECT_FALSE(store
+                     .query_text("SELECT value FROM metrics WHERE run_id = 1 AND name = '" +
+                                 std::string(name) + "'")
+                     .empty())
+        << name;
+  }
+  const std::string run_dir = store.query_text("SELECT out_dir FROM runs WHERE id = 1");
+  for (const char* file : {"knotting.png", "segmentation_0.png", "trajectories.png",
+                           "trajectories.csv", "tables.txt", "models/cor.cnmp"}) {
+    EXPECT_TRUE(std::filesystem::exists(run_dir + "/" + file)) << file;
+  }
 }
 
 }  // namespace

@@ -53,8 +53,8 @@ TEST(ResultStore, CompleteRunWritesTrialsMetricsAndStatusTogether) {
   ResultStore store(dir.file("r.sqlite"));
   const int64_t id = store.begin_run(a_run());
   store.complete_run(id,
-                     {{0, "{\"x\":1}", "push", "push", true, ""},
-                      {1, "{\"x\":2}", "pull", "none", false, "touched the corridor"}},
+                     {{0, "{\"x\":1}", "push", "push", true, "", ""},
+                      {1, "{\"x\":2}", "pull", "none", false, "touched the corridor", ""}},
                      {{"task_success_rate", 0.5}});
   const std::string where = " WHERE run_id = " + std::to_string(id);
   EXPECT_EQ(store.query_int("SELECT COUNT(*) FROM trials" + where), 2);

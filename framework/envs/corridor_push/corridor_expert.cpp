@@ -2,10 +2,8 @@
 #include "envs/corridor_push/corridor_expert.hpp"
 
 #include <fmt/format.h>
-#include <spdlog/spdlog.h>
 
-#include "core/interrupt.hpp"
-#include "core/progress.hpp"
+#include "data/expert_collection.hpp"
 #include "envs/corridor_push/path_sampling.hpp"
 
 namespace corrmp {
@@ -154,37 +152,18 @@ double CorridorExpert::tempo_factor(Rng& rng) const {
 
 DemonstrationSplit CorridorExpert::collect(Environment* environment, Rng& rng) {
   if (environment == nullptr) throw std::runtime_error("corridor_expert needs an environment");
-  const int wanted = params_.train + params_.validation;
-  const int attempts = wanted * params_.max_attempts_factor;
-  DemonstrationSplit split;
-  Progress progress("demonstrations", wanted);
-  int failed = 0, tried = 0;
-  for (;
-       tried < attempts && static_cast<int>(split.train.size() + split.validation.size()) < wanted;
-       ++tried) {
-    check_interrupt();
+  const ExpertCollection wanted{params_.train, params_.validation,
+                                (params_.train + params_.validation) * params_.max_attempts_factor,
+                                "corridor_expert"};
+  return collect_expert_demonstrations(wanted, [&] {
     const Scenario scenario = environment->sample_scenario(rng);
-    try {
-      Demonstration demo = demonstrate(*environment, scenario, params_.images, &rng);
-      const Outcome outcome = environment->outcome();
-      if (!outcome.success) throw std::runtime_error(outcome.failure);
-      auto& into =
-          static_cast<int>(split.train.size()) < params_.train ? split.train : split.validation;
-      into.push_back(std::move(demo));
-      progress.advance();
-    } catch (const std::runtime_error& e) {
-      ++failed;
-      spdlog::warn("expert demonstration of {} dropped: {}", scenario_json(scenario), e.what());
+    Demonstration demo = demonstrate(*environment, scenario, params_.images, &rng);
+    const Outcome outcome = environment->outcome();
+    if (!outcome.success) {
+      throw std::runtime_error(scenario_json(scenario) + ": " + outcome.failure);
     }
-  }
-  progress.finish(fmt::format("{} dropped", failed));
-  const int succeeded = static_cast<int>(split.train.size() + split.validation.size());
-  if (succeeded < wanted) {
-    throw std::runtime_error(
-        fmt::format("the expert succeeded on only {} of the {} scenarios tried ({} wanted)",
-                    succeeded, tried, wanted));
-  }
-  return split;
+    return demo;
+  });
 }
 
 }  // namespace corrmp

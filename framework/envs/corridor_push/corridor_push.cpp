@@ -126,14 +126,17 @@ Observation CorridorPush::observe(bool with_image) {
 }
 
 Outcome CorridorPush::outcome() const {
-  if (!failure_.empty()) return {false, failure_};
-  if (touched_corridor_) return {false, "the object touched the corridor"};
+  if (!failure_.empty()) return {false, failure_, {}, {}};
+  if (touched_corridor_) return {false, "the object touched the corridor", {}, {}};
   const Eigen::Vector3d object = object_position();
   if (object.y() <= corridor_mid_y()) {
-    return {false, fmt::format("the object stopped {:.1f} cm before the corridor's midpoint",
-                               100 * (corridor_mid_y() - object.y()))};
+    return {false,
+            fmt::format("the object stopped {:.1f} cm before the corridor's midpoint",
+                        100 * (corridor_mid_y() - object.y())),
+            {},
+            {}};
   }
-  return {true, ""};
+  return {true, "", {}, {}};
 }
 
 std::string CorridorPush::classify_decision(const Eigen::MatrixXd& trajectory) const {

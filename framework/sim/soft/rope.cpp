@@ -72,8 +72,16 @@ Rope::Rope(SoftWorld& world, const RopeParams& params,
   }
   btSoftBody::Material* bend = body_->appendMaterial();
   bend->m_kLST = params.bend_stiffness;
-  for (int i = 0; i + 1 < n; ++i) body_->appendLink(i, i + 1, stretch);
-  for (int i = 0; i + 2 < n; ++i) body_->appendLink(i, i + 2, bend);
+  // Rest lengths come from the rope, not from the start layout (which may be bent).
+  const double spacing = world.to_units(params.length / (n - 1));
+  for (int i = 0; i + 1 < n; ++i) {
+    body_->appendLink(i, i + 1, stretch);
+    rest_length_.push_back(spacing);
+  }
+  for (int i = 0; i + 2 < n; ++i) {
+    body_->appendLink(i, i + 2, bend);
+    rest_length_.push_back(2 * spacing);
+  }
   btSoftBody::Config& cfg = body_->m_cfg;
   cfg.piterations = params.iterations;
   cfg.kDP = params.damping;
@@ -84,6 +92,7 @@ Rope::Rope(SoftWorld& world, const RopeParams& params,
   cfg.collisions = btSoftBody::fCollision::SDF_RS;
   body_->getCollisionShape()->setMargin(world.to_units(params.radius));
   body_->setActivationState(DISABLE_DEACTIVATION);
+  update_constants();
   world.add_soft_body(body_);
   world.add_post_step(body_, [this] { self_contact(); });
 }
@@ -127,10 +136,33 @@ Eigen::Vector3d Rope::end_point() const {
   return sum / (node_count() - first);
 }
 
+void Rope::update_constants() {
+  // Bullet recomputes its link constants at the next step after a mass change,
+  // taking the rest lengths from the current (possibly bent or stretched) shape;
+  // do it now and put the rope's own rest lengths back.
+  body_->updateConstants();
+  body_->m_bUpdateRtCst = false;
+  for (int l = 0; l < body_->m_links.size(); ++l) {
+    btSoftBody::Link& link = body_->m_links[l];
+    link.m_rl = rest_length_[l];
+    link.m_c1 = link.m_rl * link.m_rl;
+  }
+}
+
 void Rope::pin(int i, bool pinned) {
   node(i);
   body_->setMass(i, pinned ? 0.0 : node_mass_[i]);
   if (pinned) body_->m_nodes[i].m_v.setZero();
+  update_constants();
+}
+
+void Rope::set_mass(int i, double mass) {
+  node(i);
+  if (!(mass > 0))
+    throw std::invalid_argument(fmt::format("Rope::set_mass: node {} mass {}", i, mass));
+  node_mass_[i] = mass;
+  if (body_->m_nodes[i].m_im > 0) body_->setMass(i, mass);
+  update_constants();
 }
 
 void Rope::set_node(int i, const Eigen::Vector3d& position) {

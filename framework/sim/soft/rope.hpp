@@ -14,8 +14,8 @@
 namespace corrmp {
 
 struct RopeParams {
-  double length = 0.9;
-  int nodes = 91;
+  double length = 0.95;
+  int nodes = 96;
   double radius = 0.005;
   double mass = 0.04;
   double stretch_stiffness = 1.0;
@@ -51,8 +51,10 @@ struct RopeParams {
 
 class Rope {
  public:
-  // Builds the rope through `positions` (one per node, metres; consecutive
-  // distances are the rest lengths) and adds it to `world`.
+  // Builds the rope through `positions` (one per node, metres, about
+  // length / (nodes - 1) apart) and adds it to `world`. Rest lengths are those
+  // of a straight rope: length / (nodes - 1) between neighbours, twice that
+  // for the bending links.
   Rope(SoftWorld& world, const RopeParams& params, const std::vector<Eigen::Vector3d>& positions);
   ~Rope();
   Rope(const Rope&) = delete;
@@ -69,6 +71,8 @@ class Rope {
 
   // Pins node i where it is (infinite mass) or gives it back its mass.
   void pin(int i, bool pinned);
+  // Sets node i's mass (kg), e.g. to hang a weight on the rope.
+  void set_mass(int i, double mass);
   // Overwrites node i's position (tests, fault injection).
   void set_node(int i, const Eigen::Vector3d& position);
 
@@ -80,10 +84,13 @@ class Rope {
   SoftWorld& world() { return world_; }
 
  private:
+  void update_constants();
+
   SoftWorld& world_;
   RopeParams params_;
   btSoftBody* body_ = nullptr;
   std::vector<double> node_mass_;
+  std::vector<double> rest_length_;  // per link, Bullet units
 };
 
 // Node positions of a straight rope from `start` along `direction`.

@@ -118,8 +118,10 @@ std::string SoftWorld::blow_up() const {
       const btSoftBody::Link& link = body.m_links[l];
       const double length = (link.m_n[0]->m_x - link.m_n[1]->m_x).length();
       if (length > params_.stretch_limit * link.m_rl) {
-        return fmt::format("physics fault: soft body {} link {} stretched {:.3g} times", b, l,
-                           length / link.m_rl);
+        return fmt::format(
+            "physics fault: soft body {} link {} (nodes {}-{}) stretched {:.3g} times to {:.3g} m",
+            b, l, link.m_n[0] - &body.m_nodes[0], link.m_n[1] - &body.m_nodes[0],
+            length / link.m_rl, length / params_.world_scale);
       }
     }
   }

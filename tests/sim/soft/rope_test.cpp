@@ -5,6 +5,8 @@
 
 #include <gtest/gtest.h>
 
+#include <cmath>
+
 #include "sim/soft/soft_world.hpp"
 
 namespace corrmp {
@@ -39,35 +41,42 @@ TEST(Rope, EndPointIsTheCentroidOfTheColouredEnd) {
   EXPECT_NEAR(rope.end_point().x(), 0.475, 1e-6);
 }
 
-// Two pieces of rope pinned at both ends cross each other; the upper one falls
-// onto the lower one. With the self-contact pass they stay two radii apart.
+// Nodes every `spacing` along the polyline through `corners`.
+std::vector<Eigen::Vector3d> walk(const std::vector<Eigen::Vector3d>& corners, double spacing) {
+  std::vector<Eigen::Vector3d> nodes{corners.front()};
+  for (size_t k = 1; k < corners.size(); ++k) {
+    const Eigen::Vector3d d = corners[k] - corners[k - 1];
+    const int steps = static_cast<int>(std::lround(d.norm() / spacing));
+    for (int i = 1; i <= steps; ++i) nodes.push_back(corners[k - 1] + d * i / steps);
+  }
+  return nodes;
+}
+
+// One rope: a piece along x at z = 1, pinned at its ends, a turn, then a piece
+// along y 3 cm above it, pinned at its ends, which falls onto the first. With
+// the self-contact pass the pieces stay two radii apart.
 double closest_crossing_distance() {
   SoftWorld world(SoftWorldParams{});
+  const std::vector<Eigen::Vector3d> positions =
+      walk({{-0.12, 0, 1}, {0.12, 0, 1}, {0.12, 0, 1.03}, {0, -0.12, 1.03}, {0, 0.12, 1.03}}, 0.01);
   RopeParams params;
-  params.length = 0.6;
-  params.nodes = 61;
-  // One rope: a straight piece along x at z = 1, a U-turn, then a piece along y
-  // 3 cm above it that falls onto the first.
-  std::vector<Eigen::Vector3d> positions;
-  for (int i = 0; i < 61; ++i) {
-    if (i <= 25)
-      positions.emplace_back(-0.125 + 0.01 * i, 0.0, 1.0);
-    else if (i <= 35)
-      positions.emplace_back(0.125, 0.0, 1.0 + 0.003 * (i - 25));
-    else
-      positions.emplace_back(0.0, -0.125 + 0.01 * (i - 36), 1.03);
-  }
+  params.nodes = static_cast<int>(positions.size());
+  params.length = 0.01 * (params.nodes - 1);
   Rope rope(world, params, positions);
-  for (int i : {0, 25, 36, 60}) rope.pin(i, true);
+  const int first_end = 24, second_start = params.nodes - 25;
+  for (int i : {0, first_end, second_start, params.nodes - 1}) rope.pin(i, true);
   double closest = 1e9;
   for (int t = 0; t < 600; ++t) {
     world.step();
-    for (int i = 0; i < 25; ++i) {
-      for (int j = 36; j < 61; ++j)
+    for (int i = 0; i <= first_end; ++i) {
+      for (int j = second_start; j < params.nodes; ++j) {
         closest = std::min(closest, (rope.node(i) - rope.node(j)).norm());
+      }
     }
   }
   EXPECT_EQ(world.blow_up(), "");
+  // The upper piece did fall: its middle sags onto the lower piece.
+  EXPECT_LT(rope.node(params.nodes - 13).z(), 1.02);
   return closest;
 }
 

@@ -1,0 +1,49 @@
+// bench_rope: speed of the soft-body rope simulation of the knotting task
+// (paper, Section IV-C, "Knotting with the real robot", reproduced in
+// simulation). The counter real_time_factor is simulated seconds per wall-clock
+// second (kIsRate over simulated time).
+//   BM_RopeStep: one tick (1/600 s, one Bullet step plus the self-contact pass)
+//     of a 96-node rope draped over the bar, swinging.
+//   BM_ScriptedTrial: a whole scripted half-hitch trial (reset, settle, pre-MP,
+//     correction, post-MP, knot check) of the nominal scenario.
+#include <benchmark/benchmark.h>
+
+#include "envs/rope_knot/rope_knot_scene.hpp"
+#include "envs/rope_knot/rope_knot_script.hpp"
+#include "sim/soft/rope.hpp"
+#include "sim/soft/soft_world.hpp"
+
+namespace corrmp {
+namespace {
+
+void BM_RopeStep(benchmark::State& state) {
+  const RopeKnotParams params;
+  SoftWorld world(params.world);
+  world.add_bar("bar", {0, 0, 1}, params.bar_radius, params.bar_length, params.bar_friction);
+  Rope rope(world, params.rope,
+            straight_rope(params.rope, {-0.4, 0.0, 1.02}, Eigen::Vector3d(1.0, 0.1, 0.0)));
+  for (auto _ : state) world.step();
+  state.counters["real_time_factor"] =
+      benchmark::Counter(world.time(), benchmark::Counter::kIsRate);
+  state.counters["nodes"] = rope.node_count();
+}
+BENCHMARK(BM_RopeStep);
+
+void BM_ScriptedTrial(benchmark::State& state) {
+  RopeKnotScene scene(RopeKnotParams{});
+  double simulated = 0;
+  int knots = 0;
+  for (auto _ : state) {
+    knots += scripted_trial(scene, {}, true).knot;
+    simulated += scene.time();
+  }
+  state.counters["real_time_factor"] = benchmark::Counter(simulated, benchmark::Counter::kIsRate);
+  state.counters["simulated_s"] = scene.time();
+  state.counters["knots"] = benchmark::Counter(knots, benchmark::Counter::kAvgIterations);
+}
+BENCHMARK(BM_ScriptedTrial)->Unit(benchmark::kMillisecond);
+
+}  // namespace
+}  // namespace corrmp
+
+BENCHMARK_MAIN();

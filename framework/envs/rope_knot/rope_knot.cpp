@@ -1,0 +1,166 @@
+// The rope_knot environment (rope_knot.hpp).
+#include "envs/rope_knot/rope_knot.hpp"
+
+#include <fmt/format.h>
+
+#include <cmath>
+
+#include "envs/rope_knot/rope_knot_figure.hpp"
+
+namespace corrmp {
+
+namespace {
+
+constexpr const char* kPhysicsFault = "physics fault";
+
+// The grippers as the robot commands them. The left hand's drift is a
+// hardware error the rows do not know of; it shows in where the gripper is.
+Eigen::RowVectorXd row_of(const RopeKnotScene& scene) {
+  Eigen::RowVectorXd row(8);
+  const Eigen::Vector3d left = scene.left_command(), right = scene.right_position();
+  row << left.x(), left.y(), left.z(), scene.left_closed() ? 1.0 : 0.0, right.x(), right.y(),
+      right.z(), scene.right_closed() ? 1.0 : 0.0;
+  return row;
+}
+
+}  // namespace
+
+const std::vector<std::string>& rope_correction_labels() {
+  static const std::vector<std::string> labels{
+      "none", "posterior-to-anterior", "anterior-to-posterior", "lateral", "vertical", "combined"};
+  return labels;
+}
+
+std::string classify_rope_correction(const Eigen::Vector3d& d, double threshold) {
+  const bool x = std::abs(d.x()) > threshold, y = std::abs(d.y()) > threshold,
+             z = std::abs(d.z()) > threshold;
+  const int moved = x + y + z;
+  if (moved == 0) return "none";
+  if (moved > 1) return "combined";
+  if (x) return d.x() > 0 ? "posterior-to-anterior" : "anterior-to-posterior";
+  return y ? "lateral" : "vertical";
+}
+
+RopeKnot::RopeKnot(const RopeKnotEnvironmentParams& params) : params_(params), scene_(params.task) {
+  scene_.reset(Scenario{});
+}
+
+RopeKnot::~RopeKnot() = default;
+
+TaskReport RopeKnot::report() const {
+  TaskReport report;
+  report.trajectory_columns = {"left_x",  "left_y",  "left_z",  "left_grip",
+                               "right_x", "right_y", "right_z", "right_grip"};
+  report.error_segments = {"pre", "cor", "post"};
+  report.error_columns = {0, 1, 2, 4, 5, 6};
+  report.decision_segment = "cor";
+  report.decision_labels = rope_correction_labels();
+  report.plot_horizontal = 1;  // the left gripper seen from the robot: y right, z up
+  report.plot_vertical = 2;
+  report.outcome_metrics = {"knot", "enclosed"};
+  report.failure_categories = {"missed enclose", "near miss", "knot lost while tightening",
+                               kPhysicsFault};
+  return report;
+}
+
+Scenario RopeKnot::sample_scenario(Rng& rng) const { return scene_.sample(rng); }
+
+void RopeKnot::reset(const Scenario& scenario) {
+  fault_.clear();
+  critical_offset_.reset();
+  scene_.reset(scenario);
+}
+
+std::vector<SegmentInfo> RopeKnot::segments() const {
+  const RopeKnotParams& p = params_.task;
+  return {
+      {"pre", p.pre_points, false}, {"cor", p.cor_points, true}, {"post", p.post_points, false}};
+}
+
+Eigen::RowVectorXd RopeKnot::effector_position() const { return row_of(scene_); }
+
+Eigen::RowVectorXd RopeKnot::segment_start(const std::string& segment) const {
+  Eigen::RowVectorXd start = row_of(scene_);
+  if (segment == "cor") {  // positions are offsets; the grips stay as they are
+    for (int c : {0, 1, 2, 4, 5, 6}) start(c) = 0.0;
+  }
+  return start;
+}
+
+std::string RopeKnot::execute(const std::string& segment, const Eigen::MatrixXd& trajectory) {
+  if (!fault_.empty()) return fault_;
+  if (trajectory.cols() != 8 || trajectory.rows() < 1 || !trajectory.allFinite()) {
+    fault_ = fmt::format("{}: the '{}' trajectory is not a finite {}x8 matrix", kPhysicsFault,
+                         segment, trajectory.rows());
+    return fault_;
+  }
+  Eigen::MatrixXd rows = trajectory;
+  if (segment == "cor") {
+    const Eigen::RowVectorXd origin = row_of(scene_);
+    for (int c : {0, 1, 2, 4, 5, 6}) rows.col(c).array() += origin(c);
+  }
+  const std::string fault = scene_.execute(rows);
+  if (segment == "pre" && fault.empty()) critical_offset_ = scene_.end_offset();
+  if (!fault.empty()) {
+    fault_ =
+        fault.rfind(kPhysicsFault, 0) == 0 ? fault : fmt::format("{}: {}", kPhysicsFault, fault);
+  }
+  return fault_;
+}
+
+Observation RopeKnot::observe(bool with_image) {
+  Observation observation;
+  // The gripper mid-point where it is (the head camera sees the gripper as
+  // well as the rope), so the context includes the hand's drift.
+  const Eigen::Vector3d left = scene_.left_position(), right = scene_.right_position();
+  const Eigen::Vector3d end = scene_.rope_end(), offset = scene_.end_offset();
+  observation.state = {
+      {"gripper_mid_x", left.x()}, {"gripper_mid_y", left.y()}, {"gripper_mid_z", left.z()},
+      {"right_x", right.x()},      {"right_y", right.y()},      {"right_z", right.z()},
+      {"rope_end_x", end.x()},     {"rope_end_y", end.y()},     {"rope_end_z", end.z()},
+      {"rope_end_dx", offset.x()}, {"rope_end_dy", offset.y()}, {"rope_end_dz", offset.z()}};
+  if (with_image) {
+    if (!camera_) camera_ = std::make_unique<HeadCamera>(params_.camera);
+    const RgbdImage image = camera_->capture(scene_.render_scene());
+    observation.rgb = image.rgb;
+    observation.depth = image.depth;
+    observation.camera = CameraView{camera_->intrinsics(), camera_->world_from_camera()};
+  }
+  return observation;
+}
+
+Outcome RopeKnot::outcome() const {
+  Outcome outcome;
+  if (!fault_.empty()) {
+    outcome.failure = fault_;
+  } else {
+    const RopeKnotOutcome knot = scene_.outcome();
+    outcome.success = knot.knot;
+    outcome.failure = knot.failure;
+  }
+  const auto starts = [&](const char* category) { return outcome.failure.rfind(category, 0) == 0; };
+  outcome.metrics["knot"] = outcome.success ? 1.0 : 0.0;
+  outcome.metrics["enclosed"] =
+      starts("missed enclose") || starts("near miss") || (!fault_.empty()) ? 0.0 : 1.0;
+  if (critical_offset_) {
+    outcome.details["critical_end_dx"] = critical_offset_->x();
+    outcome.details["critical_end_dy"] = critical_offset_->y();
+    outcome.details["critical_end_dz"] = critical_offset_->z();
+  }
+  return outcome;
+}
+
+std::string RopeKnot::classify_decision(const Eigen::MatrixXd& trajectory) const {
+  if (trajectory.rows() == 0 || trajectory.cols() < 3) return "";
+  const Eigen::Vector3d displacement =
+      (trajectory.row(trajectory.rows() - 1) - trajectory.row(0)).head<3>().transpose();
+  return classify_rope_correction(displacement, params_.decision_threshold);
+}
+
+void RopeKnot::write_figures(const std::string& directory,
+                             const std::vector<EvaluatedTrial>& trials,
+                             const std::vector<Demonstration>& train) const {
+  write_knotting_figure(trials, train, directory + "/knotting.png");
+}
+
+}  // namespace corrmp

@@ -1,0 +1,206 @@
+// The rope-knotting scene (paper, Section IV-C): set-up, scenario sampling,
+// tracking of gripper rows and the knot outcome.
+#include "envs/rope_knot/rope_knot_scene.hpp"
+
+#include <fmt/format.h>
+
+#include <algorithm>
+#include <cmath>
+#include <stdexcept>
+
+#include "sim/soft/soft_render.hpp"
+
+namespace corrmp {
+
+namespace {
+
+Eigen::Vector3d vec3(const std::vector<double>& v, const char* what) {
+  if (v.size() != 3)
+    throw std::invalid_argument(fmt::format("RopeKnotParams::{}: needs 3 values", what));
+  return Eigen::Vector3d(v[0], v[1], v[2]);
+}
+
+double value_or_zero(const Scenario& scenario, const std::string& key) {
+  const auto it = scenario.find(key);
+  return it == scenario.end() ? 0.0 : it->second;
+}
+
+// Fingers pointing down (-z), closing along x.
+Eigen::Matrix3d top_grasp() {
+  Eigen::Matrix3d r;
+  r << 1, 0, 0, 0, -1, 0, 0, 0, -1;
+  return r;
+}
+
+// Fingers pointing along +y, closing along x.
+Eigen::Matrix3d side_grasp() {
+  Eigen::Matrix3d r;
+  r << 1, 0, 0, 0, 0, 1, 0, -1, 0;
+  return r;
+}
+
+}  // namespace
+
+RopeKnotScene::RopeKnotScene(const RopeKnotParams& params) : params_(params) {
+  vec3(params.bar_centre, "bar_centre");
+  vec3(params.right_start_offset, "right_start_offset");
+  vec3(params.left_start_offset, "left_start_offset");
+  vec3(params.drift_range, "drift_range");
+  reset({});
+}
+
+RopeKnotScene::~RopeKnotScene() = default;
+
+Eigen::Vector3d RopeKnotScene::bar_centre() const { return vec3(params_.bar_centre, "bar_centre"); }
+
+Scenario RopeKnotScene::sample(Rng& rng) const {
+  Scenario s;
+  s["grasp_offset"] = rng.uniform(-params_.grasp_range, params_.grasp_range);
+  s["span_offset"] = rng.uniform(-params_.span_range, params_.span_range);
+  s["drift_x"] = rng.uniform(-params_.drift_range[0], params_.drift_range[0]);
+  s["drift_y"] = rng.uniform(-params_.drift_range[1], params_.drift_range[1]);
+  s["drift_z"] = rng.uniform(-params_.drift_range[2], params_.drift_range[2]);
+  return s;
+}
+
+void RopeKnotScene::reset(const Scenario& scenario) {
+  left_.reset();
+  right_.reset();
+  rope_.reset();
+  world_ = std::make_unique<SoftWorld>(params_.world);
+  const Eigen::Vector3d bar = bar_centre();
+  world_->add_bar("bar", bar, params_.bar_radius, params_.bar_length, params_.bar_friction);
+
+  const RopeParams& rp = params_.rope;
+  const int n = rp.nodes;
+  const double step = rp.length / (n - 1);
+  const double span_offset = value_or_zero(scenario, "span_offset");
+  const double grasp_offset = value_or_zero(scenario, "grasp_offset");
+  const int load = static_cast<int>(std::lround((params_.load_arc - span_offset) / step));
+  const int grasp =
+      static_cast<int>(std::lround((params_.load_arc + params_.span + grasp_offset) / step));
+  if (load < 0 || grasp <= load + 2 || grasp >= n - 2) {
+    throw std::invalid_argument(fmt::format(
+        "RopeKnotScene::reset: weight at node {} and grasp node {} do not fit a rope of {} nodes",
+        load, grasp, n));
+  }
+  drift_ = Eigen::Vector3d(value_or_zero(scenario, "drift_x"), value_or_zero(scenario, "drift_y"),
+                           value_or_zero(scenario, "drift_z"));
+
+  // Both parts hang from the right gripper: the tail straight down, the
+  // standing part down and towards -y.
+  const Eigen::Vector3d r0 = bar + vec3(params_.right_start_offset, "right_start_offset");
+  const Eigen::Vector3d down(0, 0, -1);
+  const Eigen::Vector3d slant = Eigen::Vector3d(0, -0.4, -1).normalized();
+  std::vector<Eigen::Vector3d> positions(n);
+  for (int i = 0; i <= grasp; ++i) positions[i] = r0 + slant * step * (grasp - i);
+  for (int i = grasp; i < n; ++i) positions[i] = r0 + down * step * (i - grasp);
+
+  rope_ = std::make_unique<Rope>(*world_, rp, positions);
+  const int load_nodes = std::max(1, static_cast<int>(std::lround(params_.load_length / step)));
+  for (int i = load; i < std::min(load + load_nodes, grasp); ++i) {
+    rope_->set_mass(i, params_.load_mass / load_nodes);
+  }
+  right_ = std::make_unique<AnchorGripper>(*rope_, params_.gripper, top_grasp(), r0);
+  left_ =
+      std::make_unique<AnchorGripper>(*rope_, params_.gripper, side_grasp(),
+                                      bar + vec3(params_.left_start_offset, "left_start_offset"));
+  right_->close();
+  enclosed_ = -1;
+  near_miss_ = false;
+  drifting_ = false;
+  fault_.clear();
+  const int settle = static_cast<int>(std::lround(params_.settle_time / world_->time_step()));
+  for (int t = 0; t < settle && fault_.empty(); ++t) tick(left_->position(), r0);
+}
+
+void RopeKnotScene::tick(const Eigen::Vector3d& left, const Eigen::Vector3d& right) {
+  left_->tick_to(left);
+  right_->tick_to(right);
+  world_->step();
+  if (std::lround(world_->time() / world_->time_step()) % 20 == 0) fault_ = world_->blow_up();
+}
+
+std::string RopeKnotScene::set_grips(bool left_closed, bool right_closed) {
+  if (left_closed && !left_->closed()) {
+    near_miss_ = left_->near_miss();
+    enclosed_ = left_->close();
+  }
+  if (right_closed && !right_->closed()) right_->close();
+  if (!left_closed && left_->closed()) {
+    left_->open();
+    drifting_ = true;
+  }
+  if (!right_closed && right_->closed()) right_->open();
+  // Hold still while a release ramps out.
+  while ((left_->releasing() || right_->releasing()) && fault_.empty()) {
+    tick(left_->position(), right_->position());
+  }
+  return fault_;
+}
+
+std::string RopeKnotScene::execute(const Eigen::MatrixXd& rows) {
+  if (rows.cols() != 8) {
+    throw std::invalid_argument(
+        fmt::format("RopeKnotScene::execute: rows have {} columns, not 8", rows.cols()));
+  }
+  if (!rows.allFinite()) throw std::invalid_argument("RopeKnotScene::execute: non-finite row");
+  const double reach = params_.gripper.max_speed * world_->time_step();
+  for (Eigen::Index k = 0; k < rows.rows() && fault_.empty(); ++k) {
+    const Eigen::Vector3d left_target = rows.row(k).segment<3>(0).transpose() + left_drift();
+    const Eigen::Vector3d right_target = rows.row(k).segment<3>(4).transpose();
+    while (fault_.empty()) {
+      const Eigen::Vector3d dl = left_target - left_->position();
+      const Eigen::Vector3d dr = right_target - right_->position();
+      if (dl.norm() < 1e-9 && dr.norm() < 1e-9) break;
+      tick(left_->position() + (dl.norm() > reach ? (dl * (reach / dl.norm())).eval() : dl),
+           right_->position() + (dr.norm() > reach ? (dr * (reach / dr.norm())).eval() : dr));
+    }
+    if (fault_.empty()) set_grips(rows(k, 3) >= 0.5, rows(k, 7) >= 0.5);
+  }
+  if (fault_.empty()) fault_ = world_->blow_up();
+  return fault_;
+}
+
+Eigen::Vector3d RopeKnotScene::left_position() const { return left_->position(); }
+Eigen::Vector3d RopeKnotScene::left_drift() const {
+  return drifting_ ? drift_ : Eigen::Vector3d::Zero();
+}
+
+Eigen::Vector3d RopeKnotScene::left_command() const { return left_->position() - left_drift(); }
+Eigen::Vector3d RopeKnotScene::right_position() const { return right_->position(); }
+bool RopeKnotScene::left_closed() const { return left_->closed(); }
+bool RopeKnotScene::right_closed() const { return right_->closed(); }
+std::vector<Eigen::Vector3d> RopeKnotScene::rope_nodes() const { return rope_->nodes(); }
+Eigen::Vector3d RopeKnotScene::rope_end() const { return rope_->end_point(); }
+Eigen::Vector3d RopeKnotScene::end_offset() const { return rope_end() - left_position(); }
+double RopeKnotScene::time() const { return world_->time(); }
+
+RenderScene RopeKnotScene::render_scene() const {
+  return soft_render_scene(*world_, *rope_, {left_.get(), right_.get()});
+}
+
+RopeKnotOutcome RopeKnotScene::outcome() const {
+  RopeKnotOutcome out;
+  if (!fault_.empty()) {
+    out.failure = "physics fault";
+    return out;
+  }
+  try {
+    out.report = analyse_rope_on_bar(rope_nodes(), bar_centre(), Eigen::Vector3d::UnitY());
+  } catch (const std::exception&) {
+    out.failure = "physics fault";
+    return out;
+  }
+  out.knot =
+      out.report.determinant == 3 && std::abs(out.report.winding_number) >= params_.min_winding;
+  if (enclosed_ <= 0) {
+    out.knot = false;
+    out.failure = near_miss_ ? "near miss" : "missed enclose";
+  } else if (!out.knot) {
+    out.failure = "knot lost while tightening";
+  }
+  return out;
+}
+
+}  // namespace corrmp

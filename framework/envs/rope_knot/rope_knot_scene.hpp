@@ -1,0 +1,83 @@
+// The physical set-up of the simulated rope-knotting task (paper, Section
+// IV-C), without any learning: a soft-body rope with a weight on its standing
+// end, a bar, two anchoring grippers that follow rows [Lx, Ly, Lz, Lgrip, Rx,
+// Ry, Rz, Rgrip] (metres; grip 1 closed, 0 open, thresholded at 0.5) at
+// bounded speed, scenario sampling and the knot outcome. The left gripper is
+// the enclosing one; its hand drift is added to the rows it executes after it
+// has let go of the standing part (its reach for the free end).
+#pragma once
+
+#include <Eigen/Core>
+#include <memory>
+#include <string>
+#include <vector>
+
+#include "core/seeds.hpp"
+#include "data/observation.hpp"
+#include "envs/rope_knot/knot_check.hpp"
+#include "envs/rope_knot/rope_knot_params.hpp"
+#include "sim/render/render_scene.hpp"
+
+namespace corrmp {
+
+struct RopeKnotOutcome {
+  bool knot = false;
+  // "" on success, else "missed enclose", "near miss", "knot lost while
+  // tightening" or "physics fault".
+  std::string failure;
+  KnotReport report;
+};
+
+class RopeKnotScene {
+ public:
+  explicit RopeKnotScene(const RopeKnotParams& params);
+  ~RopeKnotScene();
+
+  // Keys: grasp_offset (m along the rope towards its end), span_offset (m more
+  // rope between the weight and the right gripper), drift_x, drift_y, drift_z
+  // (m, the left hand's drift, see left_drift()). Missing keys are 0. Builds the world, lets the
+  // rope settle.
+  void reset(const Scenario& scenario);
+  Scenario sample(Rng& rng) const;
+
+  // Follows the rows; "" or the physics fault that stopped it.
+  std::string execute(const Eigen::MatrixXd& rows);
+
+  Eigen::Vector3d left_position() const;  // finger mid-points
+  // Where the rows put the left gripper: its position without the hand's drift.
+  Eigen::Vector3d left_command() const;
+  // The left hand's drift: the scenario's drift once the left gripper has let
+  // go of the standing part (it reaches for the free end), zero before.
+  Eigen::Vector3d left_drift() const;
+  Eigen::Vector3d right_position() const;
+  bool left_closed() const;
+  bool right_closed() const;
+  std::vector<Eigen::Vector3d> rope_nodes() const;
+  // The rope end: the centroid of the coloured end's nodes.
+  Eigen::Vector3d rope_end() const;
+  // The rope end relative to the left (enclosing) gripper's finger mid-point.
+  Eigen::Vector3d end_offset() const;
+  Eigen::Vector3d bar_centre() const;
+  double time() const;
+
+  RenderScene render_scene() const;
+  RopeKnotOutcome outcome() const;
+  const RopeKnotParams& params() const { return params_; }
+
+ private:
+  void tick(const Eigen::Vector3d& left, const Eigen::Vector3d& right);
+  std::string set_grips(bool left_closed, bool right_closed);
+
+  RopeKnotParams params_;
+  std::unique_ptr<SoftWorld> world_;
+  std::unique_ptr<Rope> rope_;
+  std::unique_ptr<AnchorGripper> left_;
+  std::unique_ptr<AnchorGripper> right_;
+  Eigen::Vector3d drift_ = Eigen::Vector3d::Zero();
+  int enclosed_ = -1;       // nodes anchored at the left gripper's last close
+  bool near_miss_ = false;  // at that close
+  bool drifting_ = false;   // the left gripper has opened once
+  std::string fault_;
+};
+
+}  // namespace corrmp

@@ -1,0 +1,117 @@
+// Tests of the rope_knot environment and its expert as the framework sees
+// them: the correction labels, the expert's segments (a relative cor-MP, the
+// whole-skill recording with the critical points' spans), replaying the
+// expert through the environment, the camera's model and determinism.
+#include "envs/rope_knot/rope_knot.hpp"
+
+#include <gtest/gtest.h>
+
+#include "envs/rope_knot/rope_expert.hpp"
+#include "envs/rope_knot/rope_knot_script.hpp"
+
+namespace corrmp {
+namespace {
+
+TEST(RopeKnot, CorrectionsAreLabelledByTheAxesTheyMoveAlong) {
+  const double t = 0.01;
+  EXPECT_EQ(classify_rope_correction({0.005, -0.005, 0.009}, t), "none");
+  EXPECT_EQ(classify_rope_correction({0.02, 0.0, 0.0}, t), "posterior-to-anterior");
+  EXPECT_EQ(classify_rope_correction({-0.02, 0.005, 0.0}, t), "anterior-to-posterior");
+  EXPECT_EQ(classify_rope_correction({0.0, -0.03, 0.0}, t), "lateral");
+  EXPECT_EQ(classify_rope_correction({0.0, 0.0, 0.02}, t), "vertical");
+  EXPECT_EQ(classify_rope_correction({0.02, 0.03, 0.0}, t), "combined");
+  for (const auto& label : {"none", "lateral", "combined"}) {
+    EXPECT_NE(std::find(rope_correction_labels().begin(), rope_correction_labels().end(), label),
+              rope_correction_labels().end());
+  }
+}
+
+TEST(RopeKnot, TheExpertsSegmentsReplayThroughTheEnvironment) {
+  RopeKnot env{RopeKnotEnvironmentParams{}};
+  RopeExpert expert{RopeExpertParams{}};
+  const Scenario scenario{{"grasp_offset", 0.02}, {"drift_y", -0.015}};
+  const Demonstration demo = expert.demonstrate(env, scenario, false);
+  ASSERT_TRUE(env.outcome().success) << env.outcome().failure;
+  for (const char* name : {"pre", "cor", "post", "full"}) ASSERT_NE(demo.find(name), nullptr);
+  const SegmentTrajectory& pre = *demo.find("pre");
+  const SegmentTrajectory& cor = *demo.find("cor");
+  const SegmentTrajectory& post = *demo.find("post");
+  const SegmentTrajectory& full = *demo.find("full");
+  EXPECT_EQ(cor.y.cols(), 8);
+  EXPECT_EQ(cor.y.rows(), env.params().task.cor_points);
+  // The correction is relative: it starts at zero offset, the grips as they are.
+  EXPECT_LT(cor.y.row(0).head<3>().norm(), 1e-12);
+  EXPECT_EQ(cor.y(0, 7), 1.0);  // the right gripper still holds the rope
+  EXPECT_EQ(demo.correction,
+            classify_rope_correction(cor.y.row(cor.y.rows() - 1).head<3>().transpose(),
+                                     env.params().decision_threshold));
+  EXPECT_EQ(full.y.rows(), pre.y.rows() + cor.y.rows() + post.y.rows());
+  EXPECT_DOUBLE_EQ(pre.phase_begin, 0.0);
+  EXPECT_LT(pre.phase_end, cor.phase_begin);
+  EXPECT_LT(cor.phase_end, post.phase_begin);
+  EXPECT_DOUBLE_EQ(post.phase_end, 1.0);
+
+  // The environment executes the same segments, the relative one from where
+  // the grippers are, and ties the knot again.
+  env.reset(scenario);
+  EXPECT_EQ(env.execute("pre", pre.y), "");
+  EXPECT_LT((env.segment_start("cor") - cor.y.row(0)).norm(), 1e-9);
+  EXPECT_EQ(env.execute("cor", cor.y), "");
+  EXPECT_EQ(env.execute("post", post.y), "");
+  const Outcome outcome = env.outcome();
+  EXPECT_TRUE(outcome.success) << outcome.failure;
+  EXPECT_EQ(outcome.metrics.at("knot"), 1.0);
+  EXPECT_EQ(outcome.metrics.at("enclosed"), 1.0);
+  EXPECT_EQ(outcome.details.count("critical_end_dx"), 1u);
+}
+
+TEST(RopeKnot, ObservationsCarryTheCameraModelAndTheTrueOffset) {
+  RopeKnot env{RopeKnotEnvironmentParams{}};
+  env.reset({});
+  const Observation seen = env.observe(true);
+  ASSERT_TRUE(seen.camera.has_value());
+  EXPECT_EQ(seen.rgb.cols, env.params().camera.width);
+  EXPECT_EQ(seen.depth.rows, env.params().camera.height);
+  EXPECT_EQ(seen.camera->intrinsics.width, env.params().camera.width);
+  const Eigen::Vector3d end(seen.value("rope_end_x"), seen.value("rope_end_y"),
+                            seen.value("rope_end_z"));
+  const Eigen::Vector3d gripper(seen.value("gripper_mid_x"), seen.value("gripper_mid_y"),
+                                seen.value("gripper_mid_z"));
+  const Eigen::Vector3d offset(seen.value("rope_end_dx"), seen.value("rope_end_dy"),
+                               seen.value("rope_end_dz"));
+  EXPECT_LT((end - gripper - offset).norm(), 1e-12);
+  EXPECT_FALSE(env.observe(false).camera.has_value());
+}
+
+TEST(RopeKnot, ATrialIsDeterministic) {
+  const Scenario scenario{{"grasp_offset", -0.01}, {"span_offset", 0.02}, {"drift_x", 0.01}};
+  std::vector<Eigen::MatrixXd> runs;
+  std::vector<std::string> failures;
+  for (int i = 0; i < 2; ++i) {
+    RopeKnot env{RopeKnotEnvironmentParams{}};
+    env.reset(scenario);
+    failures.push_back(env.execute("pre", pre_waypoints(env.params().task)));
+    Eigen::MatrixXd nodes(static_cast<Eigen::Index>(env.scene().rope_nodes().size()), 3);
+    for (size_t k = 0; k < env.scene().rope_nodes().size(); ++k) {
+      nodes.row(static_cast<Eigen::Index>(k)) = env.scene().rope_nodes()[k].transpose();
+    }
+    runs.push_back(nodes);
+  }
+  EXPECT_EQ(failures[0], failures[1]);
+  EXPECT_EQ(runs[0], runs[1]);  // bit for bit
+}
+
+TEST(RopeKnot, ABrokenTrajectoryIsAPhysicsFaultNotACrash) {
+  RopeKnot env{RopeKnotEnvironmentParams{}};
+  env.reset({});
+  Eigen::MatrixXd bad = Eigen::MatrixXd::Zero(3, 8);
+  bad(1, 2) = std::numeric_limits<double>::quiet_NaN();
+  const std::string failure = env.execute("pre", bad);
+  EXPECT_EQ(failure.rfind("physics fault", 0), 0u) << failure;
+  EXPECT_FALSE(env.outcome().success);
+  EXPECT_EQ(env.outcome().failure, failure);
+  EXPECT_EQ(env.execute("post", Eigen::MatrixXd::Zero(2, 8)), failure);  // stays failed
+}
+
+}  // namespace
+}  // namespace corrmp
