@@ -48,6 +48,14 @@ double outcome_mean(const std::vector<EvaluatedTrial>& trials, const std::string
   return trials.empty() ? 0.0 : sum / static_cast<double>(trials.size());
 }
 
+// Whether the policy made the task's decision at all (a policy without the
+// decision segment, such as one with no correction, makes none).
+bool made_decisions(const TaskReport& task, const std::vector<EvaluatedTrial>& trials) {
+  return !task.decision_labels.empty() &&
+         std::any_of(trials.begin(), trials.end(),
+                     [](const EvaluatedTrial& t) { return !t.chosen_action.empty(); });
+}
+
 // Failed trials whose reason starts with `category`.
 int count_failures(const std::vector<EvaluatedTrial>& trials, const std::string& category) {
   return static_cast<int>(std::count_if(trials.begin(), trials.end(), [&](const EvaluatedTrial& t) {
@@ -69,8 +77,8 @@ std::vector<MetricRecord> evaluation_metrics(const TaskReport& task,
   std::vector<MetricRecord> m;
   const double n = std::max<double>(1.0, static_cast<double>(trials.size()));
   m.push_back({"task_success_rate", count_successes(trials) / n});
-  if (!task.decision_labels.empty())
-    m.push_back({"decision_match_rate", count_matches(trials) / n});
+  const bool decided = made_decisions(task, trials);
+  if (decided) m.push_back({"decision_match_rate", count_matches(trials) / n});
   for (const auto& segment : task.error_segments) {
     const auto it = errors.find(segment);
     if (it == errors.end()) continue;
@@ -85,7 +93,9 @@ std::vector<MetricRecord> evaluation_metrics(const TaskReport& task,
     if (it == decisions.end()) continue;
     const DecisionCounts& c = it->second;
     m.push_back({"expected_" + label, static_cast<double>(c.expected)});
-    m.push_back({"decision_match_rate_" + label, static_cast<double>(c.matched) / c.expected});
+    if (decided) {
+      m.push_back({"decision_match_rate_" + label, static_cast<double>(c.matched) / c.expected});
+    }
     m.push_back({"task_success_rate_" + label, static_cast<double>(c.succeeded) / c.expected});
   }
   for (const auto& name : task.outcome_metrics) {
@@ -106,8 +116,9 @@ std::string evaluation_tables(const TaskReport& task, const std::vector<Evaluate
   const int successes = count_successes(trials);
   std::string t;
   if (!task.decision_labels.empty()) {
+    const bool decided = made_decisions(task, trials);
     t += fmt::format("Table I ({}): {} of {} trials succeeded, decision match {}\n", label,
-                     successes, count, percent(count_matches(trials), count));
+                     successes, count, decided ? percent(count_matches(trials), count) : "-");
     t += fmt::format("  {:<14} {:<34} {:>15} {:>13}\n", "expected", "action choice",
                      "decision match", "task success");
     const auto decisions = count_decisions(trials);
@@ -118,8 +129,8 @@ std::string evaluation_tables(const TaskReport& task, const std::vector<Evaluate
       for (const auto& [action, n] : it->second.chosen) {
         chosen += fmt::format("{}{} {}", chosen.empty() ? "" : ", ", n, action);
       }
-      t += fmt::format("  {:<14} {:<34} {:>15} {:>13}\n", name, chosen,
-                       percent(it->second.matched, it->second.expected),
+      t += fmt::format("  {:<14} {:<34} {:>15} {:>13}\n", name, decided ? chosen : "-",
+                       decided ? percent(it->second.matched, it->second.expected) : "-",
                        percent(it->second.succeeded, it->second.expected));
     }
   } else {

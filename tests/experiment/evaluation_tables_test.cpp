@@ -64,6 +64,20 @@ TEST(EvaluationTables, DecisionsErrorsOutcomesAndFailuresFollowTheTask) {
   EXPECT_NE(tables.find("missed enclose"), std::string::npos) << tables;
 }
 
+TEST(EvaluationTables, APolicyThatMakesNoDecisionHasNoDecisionMatch) {
+  TaskReport task;
+  task.decision_labels = {"left", "right"};
+  const std::vector<EvaluatedTrial> trials{trial(true, "", "left", "", 1),
+                                           trial(false, "x", "right", "", 0)};
+  const auto m = as_map(evaluation_metrics(task, trials, {}));
+  EXPECT_EQ(m.count("decision_match_rate"), 0u);
+  EXPECT_EQ(m.count("decision_match_rate_left"), 0u);
+  EXPECT_DOUBLE_EQ(m.at("expected_left"), 1);
+  EXPECT_DOUBLE_EQ(m.at("task_success_rate_left"), 1);
+  const std::string tables = evaluation_tables(task, trials, {}, "t");
+  EXPECT_NE(tables.find("1 of 2 trials succeeded, decision match -"), std::string::npos) << tables;
+}
+
 TEST(EvaluationTables, ATaskWithoutDecisionsHasNoDecisionMetrics) {
   TaskReport task;
   const std::vector<EvaluatedTrial> trials{trial(true, "", "", "", 1),

@@ -24,7 +24,10 @@ namespace corrmp {
 
 struct RopeKnotEnvironmentParams {
   RopeKnotParams task;
-  HeadCameraParams camera{320, 240, 45.0, {0.0, 0.0, 0.80}, {0.38, 0.08, 0.12}, {0.92, 0.92, 0.9}};
+  // Behind the grippers and above the bar, looking at the critical point:
+  // the rope end is seen in 97% of the demonstrations' images (94% at
+  // 320 x 240, 69-89% from above or from a side).
+  HeadCameraParams camera{480, 360, 30.0, {-0.1, 0.0, 0.6}, {0.35, 0.05, 0.15}, {0.92, 0.92, 0.9}};
   double decision_threshold = 0.01;
 
   // The task's parameters sit at the section's top level, beside these.
