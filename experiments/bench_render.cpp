@@ -14,7 +14,7 @@
 // printed in the benchmark context.
 #include <benchmark/benchmark.h>
 
-#include "sim/render/camera_model.hpp"
+#include "data/camera_model.hpp"
 #include "sim/render/node_chain.hpp"
 #include "sim/render/offscreen_renderer.hpp"
 

@@ -34,7 +34,7 @@ struct SegmentTrajectory {
 struct Demonstration {
   std::string scenario;  // JSON describing what was demonstrated
   std::vector<SegmentTrajectory> segments;
-  std::string correction;  // the demonstrated correction (push, pull, none) where known
+  std::string decision;  // the decision made at the critical point (a TaskReport label) where known
 
   const SegmentTrajectory* find(const std::string& segment) const {
     for (const auto& s : segments) {

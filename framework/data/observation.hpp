@@ -10,7 +10,7 @@
 #include <optional>
 #include <string>
 
-#include "sim/render/camera_model.hpp"
+#include "data/camera_model.hpp"
 
 namespace corrmp {
 

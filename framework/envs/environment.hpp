@@ -56,6 +56,10 @@ struct TaskReport {
   // can return, in table order. No labels: the task has no such decision.
   std::string decision_segment;
   std::vector<std::string> decision_labels;
+  // The columns a relative segment's rows give as offsets from the segment's
+  // start (positions); the others stay absolute (a gripper's opening). Empty:
+  // all of them.
+  std::vector<int> relative_columns;
   // The two trajectory columns of the trajectories figure's panels.
   int plot_horizontal = 0;
   int plot_vertical = 1;
@@ -65,6 +69,14 @@ struct TaskReport {
   // the tables count the failures per category.
   std::vector<std::string> failure_categories;
 };
+
+// TaskReport::relative_columns, or every column of a `width`-column row.
+inline std::vector<int> relative_columns_of(const TaskReport& task, Eigen::Index width) {
+  if (!task.relative_columns.empty()) return task.relative_columns;
+  std::vector<int> all(static_cast<size_t>(width));
+  for (Eigen::Index c = 0; c < width; ++c) all[static_cast<size_t>(c)] = static_cast<int>(c);
+  return all;
+}
 
 class Environment {
  public:
@@ -82,15 +94,16 @@ class Environment {
   // next absolute segment starts.
   virtual Eigen::RowVectorXd effector_position() const = 0;
   // The first row of `segment`'s trajectory from the current state: the
-  // effectors' positions, or zero offsets for a relative segment (a task
-  // whose relative rows also carry absolute values, such as a gripper's
-  // opening, overrides this).
+  // effectors' positions, with zero offsets in the relative columns of a
+  // relative segment.
   virtual Eigen::RowVectorXd segment_start(const std::string& segment) const {
-    const Eigen::RowVectorXd position = effector_position();
+    Eigen::RowVectorXd start = effector_position();
     for (const auto& s : segments()) {
-      if (s.name == segment && s.relative) return Eigen::RowVectorXd::Zero(position.size());
+      if (s.name == segment && s.relative) {
+        for (int c : relative_columns_of(report(), start.size())) start(c) = 0.0;
+      }
     }
-    return position;
+    return start;
   }
   // Tracks the trajectory of `segment` (rows: trajectory columns; offsets
   // when the segment is relative; a segment the task does not list, such as

@@ -133,7 +133,7 @@ class Reader {
 
 void write_demo(Writer& w, const Demonstration& demo) {
   w.string(demo.scenario);
-  w.string(demo.correction);
+  w.string(demo.decision);
   w.pod(static_cast<uint32_t>(demo.segments.size()));
   for (const auto& s : demo.segments) {
     w.string(s.segment);
@@ -156,7 +156,7 @@ void write_demo(Writer& w, const Demonstration& demo) {
 Demonstration read_demo(Reader& r) {
   Demonstration demo;
   demo.scenario = r.string();
-  demo.correction = r.string();
+  demo.decision = r.string();
   const auto segments = r.pod<uint32_t>();
   for (uint32_t i = 0; i < segments; ++i) {
     SegmentTrajectory s;

@@ -6,7 +6,7 @@
 //
 // Format (little-endian): "CMPD", uint32 version, uint64 demonstration count for
 // train then validation, then per demonstration: string scenario, string
-// correction, uint32 segments, per segment: string name, matrix x, matrix y,
+// decision, uint32 segments, per segment: string name, matrix x, matrix y,
 // vector context, double phase_begin, phase_end, uint32 state entries (string,
 // double), PNG rgb, depth as uint32 rows, cols and raw float32, uint8 camera
 // flag (then int32 width, height, double fx, fy, cx, cy, near, far and the

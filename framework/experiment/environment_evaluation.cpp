@@ -37,7 +37,7 @@ int total_points(const std::vector<SegmentInfo>& segments) {
 // between the critical points the expert passed at its nominal tempo. What
 // is executed is the policy's own uniform query; this only reads it.
 // A relative segment is read as offsets from where the policy's span starts.
-void split_at_reference_phases(Policy& policy, const std::string& whole,
+void split_at_reference_phases(Policy& policy, const std::string& whole, const TaskReport& task,
                                const std::vector<SegmentInfo>& segments,
                                const Demonstration& reference, const Eigen::MatrixXd& start,
                                const Eigen::VectorXd& context, EvaluatedTrial& out) {
@@ -55,7 +55,7 @@ void split_at_reference_phases(Policy& policy, const std::string& whole,
     Eigen::MatrixXd path = policy.generate(whole, start, context, query).mean;
     if (s.relative) {
       out.origins[s.name] = path.row(0);
-      path.rowwise() -= out.origins[s.name];
+      for (int c : relative_columns_of(task, path.cols())) path.col(c).array() -= path(0, c);
     }
     out.generated[s.name] = path;
   }
@@ -92,7 +92,7 @@ EvaluatedTrial run_trial(int index, const Scenario& scenario, Environment& envir
   Demonstration reference;
   try {
     reference = expert.demonstrate(environment, scenario, false);
-    trial.expected_action = reference.correction;
+    trial.expected_action = reference.decision;
   } catch (const std::runtime_error& e) {
     spdlog::warn("trial {}: the expert failed on this scenario: {}", index, e.what());
   }
@@ -113,7 +113,8 @@ EvaluatedTrial run_trial(int index, const Scenario& scenario, Environment& envir
     const Eigen::MatrixXd query = Eigen::VectorXd::LinSpaced(points, 0.0, 1.0);
     const Eigen::MatrixXd path = policy.generate(segment, start, context, query).mean;
     if (info == nullptr) {
-      split_at_reference_phases(policy, segment, env_segments, reference, start, context, trial);
+      split_at_reference_phases(policy, segment, task, env_segments, reference, start, context,
+                                trial);
     } else {
       trial.generated[segment] = path;
       if (info->relative) trial.origins[segment] = environment.effector_position();
@@ -147,8 +148,19 @@ EnvironmentEvaluation evaluate_in_environment(Environment& environment, Demonstr
     check_interrupt();
     const Scenario scenario = environment.sample_scenario(rng);
     SegmentPaths reference;
-    EvaluatedTrial trial =
-        run_trial(index, scenario, environment, expert, extractor, policy, task, reference);
+    EvaluatedTrial trial;
+    try {
+      trial = run_trial(index, scenario, environment, expert, extractor, policy, task, reference);
+    } catch (const Interrupted&) {
+      throw;
+    } catch (const std::exception& e) {
+      // One trial that cannot run is a failed trial with its reason, not a failed run.
+      spdlog::warn("trial {} ({}): {}", index, scenario_json(scenario), e.what());
+      trial = EvaluatedTrial{};
+      trial.trial = index;
+      trial.scenario = scenario;
+      trial.failure = std::string("error: ") + e.what();
+    }
     // Only segments the expert also showed, at the same resolution, are kept.
     for (auto it = trial.generated.begin(); it != trial.generated.end();) {
       const auto demonstrated = reference.find(it->first);
@@ -176,8 +188,16 @@ EnvironmentEvaluation evaluate_in_environment(Environment& environment, Demonstr
 
   std::map<std::string, TrajectoryError> segment_errors;
   for (const auto& [segment, accumulator] : errors) segment_errors[segment] = accumulator.result();
-  result.metrics = evaluation_metrics(task, result.evaluated, segment_errors);
-  result.tables = evaluation_tables(task, result.evaluated, segment_errors, label);
+  // The policy decides when it generates the decision segment, or the whole skill.
+  const std::vector<SegmentInfo> env_segments = environment.segments();
+  const auto segments = policy.segments();
+  const bool decides =
+      !task.decision_labels.empty() &&
+      std::any_of(segments.begin(), segments.end(), [&](const std::string& s) {
+        return s == task.decision_segment || find_segment(env_segments, s) == nullptr;
+      });
+  result.metrics = evaluation_metrics(task, decides, result.evaluated, segment_errors);
+  result.tables = evaluation_tables(task, decides, result.evaluated, segment_errors, label);
   return result;
 }
 

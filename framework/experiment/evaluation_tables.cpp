@@ -48,14 +48,6 @@ double outcome_mean(const std::vector<EvaluatedTrial>& trials, const std::string
   return trials.empty() ? 0.0 : sum / static_cast<double>(trials.size());
 }
 
-// Whether the policy made the task's decision at all (a policy without the
-// decision segment, such as one with no correction, makes none).
-bool made_decisions(const TaskReport& task, const std::vector<EvaluatedTrial>& trials) {
-  return !task.decision_labels.empty() &&
-         std::any_of(trials.begin(), trials.end(),
-                     [](const EvaluatedTrial& t) { return !t.chosen_action.empty(); });
-}
-
 // Failed trials whose reason starts with `category`.
 int count_failures(const std::vector<EvaluatedTrial>& trials, const std::string& category) {
   return static_cast<int>(std::count_if(trials.begin(), trials.end(), [&](const EvaluatedTrial& t) {
@@ -71,13 +63,12 @@ std::string metric_segment(const std::string& segment) { return segment + "_mp";
 
 }  // namespace
 
-std::vector<MetricRecord> evaluation_metrics(const TaskReport& task,
+std::vector<MetricRecord> evaluation_metrics(const TaskReport& task, bool decided,
                                              const std::vector<EvaluatedTrial>& trials,
                                              const std::map<std::string, TrajectoryError>& errors) {
   std::vector<MetricRecord> m;
   const double n = std::max<double>(1.0, static_cast<double>(trials.size()));
   m.push_back({"task_success_rate", count_successes(trials) / n});
-  const bool decided = made_decisions(task, trials);
   if (decided) m.push_back({"decision_match_rate", count_matches(trials) / n});
   for (const auto& segment : task.error_segments) {
     const auto it = errors.find(segment);
@@ -109,14 +100,14 @@ std::vector<MetricRecord> evaluation_metrics(const TaskReport& task,
   return m;
 }
 
-std::string evaluation_tables(const TaskReport& task, const std::vector<EvaluatedTrial>& trials,
+std::string evaluation_tables(const TaskReport& task, bool decided,
+                              const std::vector<EvaluatedTrial>& trials,
                               const std::map<std::string, TrajectoryError>& errors,
                               const std::string& label) {
   const int count = static_cast<int>(trials.size());
   const int successes = count_successes(trials);
   std::string t;
   if (!task.decision_labels.empty()) {
-    const bool decided = made_decisions(task, trials);
     t += fmt::format("Table I ({}): {} of {} trials succeeded, decision match {}\n", label,
                      successes, count, decided ? percent(count_matches(trials), count) : "-");
     t += fmt::format("  {:<14} {:<34} {:>15} {:>13}\n", "expected", "action choice",

@@ -17,16 +17,20 @@
 
 namespace corrmp {
 
-// task_success_rate; with decision labels decision_match_rate and, per
-// label L expected at least once, expected_L, decision_match_rate_L and
-// task_success_rate_L; <segment>_mp_error_mean_<unit> and ..._max_<unit>;
+// task_success_rate; with decision labels, per label L expected at least
+// once, expected_L and task_success_rate_L, and when the policy decides,
+// decision_match_rate and decision_match_rate_L; <segment>_mp_error_mean_<unit> and ..._max_<unit>;
 // <metric>_rate for each outcome metric (its mean over the trials);
 // failures_<category> (spaces as '_') for each failure category.
-std::vector<MetricRecord> evaluation_metrics(const TaskReport& task,
+// `decided`: whether the policy makes the task's decision at all (one
+// without the decision segment, such as pre-MP then post-MP, does not: its
+// decision match is not reported).
+std::vector<MetricRecord> evaluation_metrics(const TaskReport& task, bool decided,
                                              const std::vector<EvaluatedTrial>& trials,
                                              const std::map<std::string, TrajectoryError>& errors);
 
-std::string evaluation_tables(const TaskReport& task, const std::vector<EvaluatedTrial>& trials,
+std::string evaluation_tables(const TaskReport& task, bool decided,
+                              const std::vector<EvaluatedTrial>& trials,
                               const std::map<std::string, TrajectoryError>& errors,
                               const std::string& label);
 

@@ -154,7 +154,9 @@ void run_stages(Experiment& experiment, const fs::path& dir, const RunOptions& o
       try {
         write_trajectory_csv(evaluation.evaluated, evaluation.task,
                              (dir / "trajectories.csv").string());
-        write_trajectory_figure(evaluation.evaluated, evaluation.task,
+        std::vector<std::string> order;
+        for (const auto& s : experiment.environment->segments()) order.push_back(s.name);
+        write_trajectory_figure(evaluation.evaluated, evaluation.task, order,
                                 (dir / "trajectories.png").string());
         experiment.environment->write_figures(dir.string(), evaluation.evaluated, demos.train);
       } catch (const std::exception& e) {

@@ -18,19 +18,34 @@ namespace {
 const cv::Scalar kExpertGrey(190, 190, 190);
 const cv::Scalar kFailedRed(30, 30, 200);  // BGR
 
-cv::Scalar segment_colour(const std::string& segment) {
-  if (segment == "pre") return {200, 100, 30};  // blue
-  if (segment == "cor") return {20, 130, 240};  // orange
-  if (segment == "post") return {40, 160, 40};  // green
-  return {120, 60, 160};
+// The segments' colours in execution order: blue, orange, green, purple, brown.
+struct SegmentColour {
+  cv::Scalar bgr;
+  const char* name;
+};
+const SegmentColour kSegmentColours[] = {{{200, 100, 30}, "blue"},
+                                         {{20, 130, 240}, "orange"},
+                                         {{40, 160, 40}, "green"},
+                                         {{160, 60, 120}, "purple"},
+                                         {{30, 80, 140}, "brown"}};
+
+SegmentColour segment_colour(const std::vector<std::string>& order, const std::string& segment) {
+  const auto it = std::find(order.begin(), order.end(), segment);
+  const size_t index = static_cast<size_t>(it - order.begin());
+  constexpr size_t kCount = sizeof(kSegmentColours) / sizeof(kSegmentColours[0]);
+  return index < order.size() ? kSegmentColours[index % kCount]
+                              : SegmentColour{{90, 90, 90}, "grey"};
 }
 
-// A segment's rows in world coordinates: relative segments start at their origin.
-Eigen::MatrixXd in_world(const EvaluatedTrial& trial, const std::string& segment,
-                         const Eigen::MatrixXd& path) {
+// A segment's rows in world coordinates: a relative segment's offsets are
+// added to its origin.
+Eigen::MatrixXd in_world(const EvaluatedTrial& trial, const TaskReport& task,
+                         const std::string& segment, const Eigen::MatrixXd& path) {
   const auto origin = trial.origins.find(segment);
   if (origin == trial.origins.end()) return path;
-  return path.rowwise() + origin->second;
+  Eigen::MatrixXd world = path;
+  for (int c : relative_columns_of(task, path.cols())) world.col(c).array() += origin->second(c);
+  return world;
 }
 
 void draw_path(cv::Mat& canvas, const PlotPanel& panel, const TaskReport& task,
@@ -49,22 +64,23 @@ void write_trajectory_csv(const std::vector<EvaluatedTrial>& trials, const TaskR
                           const std::string& path) {
   auto out = fmt::output_file(path);
   const auto& columns = task.trajectory_columns;
-  out.print("trial,segment,frame,step");
+  out.print("trial,segment,step");
   for (const auto& c : columns) out.print(",{}", c);
   for (const auto& c : columns) out.print(",expert_{}", c);
   out.print("\n");
   const auto width = static_cast<Eigen::Index>(columns.size());
   for (const auto& trial : trials) {
-    for (const auto& [segment, generated] : trial.generated) {
-      const Eigen::MatrixXd& expert = trial.expert.at(segment);
-      if (generated.cols() != width || expert.cols() != width) {
+    for (const auto& [segment, relative] : trial.generated) {
+      const Eigen::MatrixXd& expert_relative = trial.expert.at(segment);
+      if (relative.cols() != width || expert_relative.cols() != width) {
         throw std::invalid_argument(fmt::format(
             "write_trajectory_csv: trial {} segment '{}' has {} columns, the task declares {}",
-            trial.trial, segment, generated.cols(), width));
+            trial.trial, segment, relative.cols(), width));
       }
-      const char* frame = trial.origins.count(segment) ? "relative" : "absolute";
+      const Eigen::MatrixXd generated = in_world(trial, task, segment, relative);
+      const Eigen::MatrixXd expert = in_world(trial, task, segment, expert_relative);
       for (Eigen::Index t = 0; t < generated.rows(); ++t) {
-        out.print("{},{},{},{}", trial.trial, segment, frame, t);
+        out.print("{},{},{}", trial.trial, segment, t);
         for (Eigen::Index c = 0; c < width; ++c) out.print(",{}", generated(t, c));
         for (Eigen::Index c = 0; c < width; ++c) out.print(",{}", expert(t, c));
         out.print("\n");
@@ -74,6 +90,7 @@ void write_trajectory_csv(const std::vector<EvaluatedTrial>& trials, const TaskR
 }
 
 void write_trajectory_figure(const std::vector<EvaluatedTrial>& trials, const TaskReport& task,
+                             const std::vector<std::string>& segment_order,
                              const std::string& png_path) {
   constexpr const char* kWhere = "write_trajectory_figure";
   if (trials.empty()) throw std::invalid_argument(fmt::format("{}: no trials", kWhere));
@@ -88,7 +105,7 @@ void write_trajectory_figure(const std::vector<EvaluatedTrial>& trials, const Ta
   for (const auto& trial : trials) {
     for (const auto* paths : {&trial.generated, &trial.expert}) {
       for (const auto& [segment, relative_path] : *paths) {
-        const Eigen::MatrixXd path = in_world(trial, segment, relative_path);
+        const Eigen::MatrixXd path = in_world(trial, task, segment, relative_path);
         if (path.rows() == 0 || !path.allFinite() || path.cols() != width) continue;
         x_lo = std::min(x_lo, path.col(v).minCoeff());
         x_hi = std::max(x_hi, path.col(v).maxCoeff());
@@ -108,10 +125,14 @@ void write_trajectory_figure(const std::vector<EvaluatedTrial>& trials, const Ta
                  CV_8UC3, kPlotWhite);
   const std::string& vertical = task.trajectory_columns[v];
   const std::string& horizontal = task.trajectory_columns[h];
+  std::string legend;
+  for (const auto& segment : segment_order) {
+    legend += fmt::format("{}{} {}", legend.empty() ? "" : ", ", segment,
+                          segment_colour(segment_order, segment).name);
+  }
   put_text(canvas,
-           fmt::format("{} up against {} right; grey: expert; generated pre blue, cor orange, "
-                       "post green",
-                       vertical, horizontal),
+           fmt::format("{} up against {} right; grey: expert; generated {}", vertical, horizontal,
+                       legend),
            {8, 20}, 0.45);
   for (int i = 0; i < count; ++i) {
     const EvaluatedTrial& trial = trials[i];
@@ -129,12 +150,13 @@ void write_trajectory_figure(const std::vector<EvaluatedTrial>& trials, const Ta
     if (!trial.success) cv::rectangle(canvas, panel.pixels, kFailedRed, 2);
     for (const auto& [segment, path] : trial.expert) {
       if (path.cols() == width) {
-        draw_path(canvas, panel, task, in_world(trial, segment, path), kExpertGrey, 3);
+        draw_path(canvas, panel, task, in_world(trial, task, segment, path), kExpertGrey, 3);
       }
     }
     for (const auto& [segment, path] : trial.generated) {
       if (path.cols() == width) {
-        draw_path(canvas, panel, task, in_world(trial, segment, path), segment_colour(segment), 1);
+        draw_path(canvas, panel, task, in_world(trial, task, segment, path),
+                  segment_colour(segment_order, segment).bgr, 1);
       }
     }
   }

@@ -11,8 +11,9 @@
 
 namespace corrmp {
 
-// Columns trial, segment, frame (absolute or relative), step, then the task's
-// trajectory columns as generated, then the same prefixed expert_.
+// Columns trial, segment, step, then the task's trajectory columns as
+// generated, then the same prefixed expert_, in world coordinates (a
+// relative segment's offsets are added to where it started).
 void write_trajectory_csv(const std::vector<EvaluatedTrial>& trials, const TaskReport& task,
                           const std::string& path);
 
@@ -20,14 +21,15 @@ void write_trajectory_csv(const std::vector<EvaluatedTrial>& trials, const TaskR
 // kTrajectoryPanelHeight under a kTrajectoryHeader-pixel caption: the task's
 // plot columns (TaskReport::plot_vertical against plot_horizontal) in world
 // coordinates, all panels on the same axes; the expert's path thick and grey
-// beneath the generated one, coloured by segment (pre blue, cor orange, post
-// green); the title names the trial, the expected and chosen decisions and
-// whether it succeeded.
+// beneath the generated one, coloured by the segment's place in
+// `segment_order` (blue, orange, green, ...); the title names the trial, the
+// expected and chosen decisions and whether it succeeded.
 constexpr int kTrajectoryColumns = 5;
 constexpr int kTrajectoryPanelWidth = 300;
 constexpr int kTrajectoryPanelHeight = 220;
 constexpr int kTrajectoryHeader = 30;
 void write_trajectory_figure(const std::vector<EvaluatedTrial>& trials, const TaskReport& task,
+                             const std::vector<std::string>& segment_order,
                              const std::string& png_path);
 
 }  // namespace corrmp

@@ -21,7 +21,7 @@ TEST(CorridorPush, TheSameScenarioReplaysIdentically) {
   for (size_t s = 0; s < first.segments.size(); ++s) {
     EXPECT_EQ(first.segments[s].y, second.segments[s].y);
   }
-  EXPECT_EQ(first.correction, "push");
+  EXPECT_EQ(first.decision, "push");
 }
 
 TEST(CorridorPush, TheExpertSucceedsOnAtLeast98PercentOfScenariosWithTheRightDecisions) {
@@ -40,11 +40,11 @@ TEST(CorridorPush, TheExpertSucceedsOnAtLeast98PercentOfScenariosWithTheRightDec
     EXPECT_TRUE(outcome.success) << scenario_json(scenario) << ": " << outcome.failure;
     const std::string expected = offset > 0.006 ? "push" : offset < -0.006 ? "pull" : "none";
     if (std::abs(std::abs(offset) - 0.006) > 0.001) {
-      EXPECT_EQ(demo.correction, expected);
+      EXPECT_EQ(demo.decision, expected);
     }
-    ++decisions[demo.correction];
+    ++decisions[demo.decision];
     // The demonstrated cor-MP is classified as the decision it implements.
-    EXPECT_EQ(env.classify_decision(demo.find("cor")->y), demo.correction);
+    EXPECT_EQ(env.classify_decision(demo.find("cor")->y), demo.decision);
     // After the correction the object was aligned with the corridor.
     ASSERT_EQ(demo.segments.size(), 4u);
     EXPECT_EQ(demo.find("full")->y.rows(), 140);
@@ -83,7 +83,7 @@ TEST(CorridorExpert, TempoMovesTheCriticalPointsInTimeButNotThePath) {
   const Demonstration first = expert.demonstrate(env, scenario, false, &first_rng);
   const Demonstration second = expert.demonstrate(env, scenario, false, &second_rng);
   for (const Demonstration* demo : {&nominal, &first, &second}) {
-    EXPECT_EQ(demo->correction, "pull");
+    EXPECT_EQ(demo->decision, "pull");
     // The segments tile the skill's time, and the recording passes each
     // critical point (a segment's last point) at the segment's phase end.
     const Eigen::MatrixXd& full = demo->find("full")->y;

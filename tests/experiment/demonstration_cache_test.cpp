@@ -39,7 +39,7 @@ TEST(DemonstrationCache, RoundTripsExactly) {
   const auto& a = demos.train[1].segments[0];
   const auto& b = loaded->train[1].segments[0];
   EXPECT_EQ(loaded->train[1].scenario, demos.train[1].scenario);
-  EXPECT_EQ(loaded->train[1].correction, "push");
+  EXPECT_EQ(loaded->train[1].decision, "push");
   EXPECT_EQ(b.segment, "cor");
   EXPECT_EQ(a.x, b.x);
   EXPECT_EQ(a.y, b.y);

@@ -40,7 +40,7 @@ TEST(EvaluationTables, DecisionsErrorsOutcomesAndFailuresFollowTheTask) {
       trial(false, "missed enclose: 0 nodes", "left", "right", 0),
       trial(false, "near miss", "right", "right", 0), trial(true, "", "right", "right", 1)};
   const std::map<std::string, TrajectoryError> errors{{"a", {1.5, 3.0}}};
-  const auto m = as_map(evaluation_metrics(task, trials, errors));
+  const auto m = as_map(evaluation_metrics(task, true, trials, errors));
   EXPECT_DOUBLE_EQ(m.at("task_success_rate"), 0.5);
   EXPECT_DOUBLE_EQ(m.at("decision_match_rate"), 0.75);
   EXPECT_DOUBLE_EQ(m.at("a_mp_error_mean_mm"), 1.5);
@@ -53,7 +53,7 @@ TEST(EvaluationTables, DecisionsErrorsOutcomesAndFailuresFollowTheTask) {
   EXPECT_DOUBLE_EQ(m.at("failures_missed_enclose"), 1);
   EXPECT_DOUBLE_EQ(m.at("failures_near_miss"), 1);
 
-  const std::string tables = evaluation_tables(task, trials, errors, "t");
+  const std::string tables = evaluation_tables(task, true, trials, errors, "t");
   EXPECT_NE(tables.find("Table I (t): 2 of 4 trials succeeded, decision match 75%"),
             std::string::npos)
       << tables;
@@ -69,12 +69,12 @@ TEST(EvaluationTables, APolicyThatMakesNoDecisionHasNoDecisionMatch) {
   task.decision_labels = {"left", "right"};
   const std::vector<EvaluatedTrial> trials{trial(true, "", "left", "", 1),
                                            trial(false, "x", "right", "", 0)};
-  const auto m = as_map(evaluation_metrics(task, trials, {}));
+  const auto m = as_map(evaluation_metrics(task, false, trials, {}));
   EXPECT_EQ(m.count("decision_match_rate"), 0u);
   EXPECT_EQ(m.count("decision_match_rate_left"), 0u);
   EXPECT_DOUBLE_EQ(m.at("expected_left"), 1);
   EXPECT_DOUBLE_EQ(m.at("task_success_rate_left"), 1);
-  const std::string tables = evaluation_tables(task, trials, {}, "t");
+  const std::string tables = evaluation_tables(task, false, trials, {}, "t");
   EXPECT_NE(tables.find("1 of 2 trials succeeded, decision match -"), std::string::npos) << tables;
 }
 
@@ -82,10 +82,10 @@ TEST(EvaluationTables, ATaskWithoutDecisionsHasNoDecisionMetrics) {
   TaskReport task;
   const std::vector<EvaluatedTrial> trials{trial(true, "", "", "", 1),
                                            trial(false, "x", "", "", 0)};
-  const auto m = as_map(evaluation_metrics(task, trials, {}));
+  const auto m = as_map(evaluation_metrics(task, false, trials, {}));
   EXPECT_DOUBLE_EQ(m.at("task_success_rate"), 0.5);
   EXPECT_EQ(m.count("decision_match_rate"), 0u);
-  const std::string tables = evaluation_tables(task, trials, {}, "t");
+  const std::string tables = evaluation_tables(task, false, trials, {}, "t");
   EXPECT_NE(tables.find("Task success (t): 1 of 2 trials succeeded"), std::string::npos) << tables;
   EXPECT_EQ(tables.find("Table I"), std::string::npos) << tables;
   EXPECT_EQ(tables.find("Table II"), std::string::npos) << tables;

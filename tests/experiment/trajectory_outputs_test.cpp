@@ -40,16 +40,19 @@ EvaluatedTrial a_trial(int index, bool success) {
 TEST(TrajectoryOutputs, CsvHoldsEveryGeneratedAndExpertPoint) {
   TempDir dir;
   EvaluatedTrial relative = a_trial(3, false);
-  relative.origins["cor"] = Eigen::RowVector3d(1, 2, 3);
+  Eigen::RowVectorXd origin(3);
+  origin << 1, 2, 3;
+  relative.origins["cor"] = origin;
   write_trajectory_csv({a_trial(0, true), relative}, xyz_task(), dir.file("t.csv"));
   std::stringstream text;
   text << std::ifstream(dir.file("t.csv")).rdbuf();
+  // The relative segment (offsets from (1, 2, 3)) is written in world coordinates.
   EXPECT_EQ(text.str(),
-            "trial,segment,frame,step,x,y,z,expert_x,expert_y,expert_z\n"
-            "0,cor,absolute,0,0.42,-0.2,0.03,0.4,-0.2,0.03\n"
-            "0,cor,absolute,1,0.42,0,0.03,0.4,0,0.03\n"
-            "3,cor,relative,0,0.42,-0.2,0.03,0.4,-0.2,0.03\n"
-            "3,cor,relative,1,0.42,0,0.03,0.4,0,0.03\n");
+            "trial,segment,step,x,y,z,expert_x,expert_y,expert_z\n"
+            "0,cor,0,0.42,-0.2,0.03,0.4,-0.2,0.03\n"
+            "0,cor,1,0.42,0,0.03,0.4,0,0.03\n"
+            "3,cor,0,1.42,1.8,3.03,1.4,1.8,3.03\n"
+            "3,cor,1,1.42,2,3.03,1.4,2,3.03\n");
 }
 
 TEST(TrajectoryOutputs, CsvColumnsAreTheTasks) {
@@ -62,7 +65,7 @@ TEST(TrajectoryOutputs, CsvColumnsAreTheTasks) {
   write_trajectory_csv({a_trial(0, true)}, task, dir.file("t.csv"));
   std::string header;
   std::getline(std::ifstream(dir.file("t.csv")) >> std::ws, header);
-  EXPECT_EQ(header, "trial,segment,frame,step,a,b,c,expert_a,expert_b,expert_c");
+  EXPECT_EQ(header, "trial,segment,step,a,b,c,expert_a,expert_b,expert_c");
 }
 
 // The pixel nearest `colour` in the column `x`, rows y-1 .. y+1 (lines are
@@ -80,7 +83,7 @@ TEST(TrajectoryOutputs, FigureHasOnePanelPerTrialOnSharedAxes) {
   TempDir dir;
   std::vector<EvaluatedTrial> trials;
   for (int i = 0; i < 7; ++i) trials.push_back(a_trial(i, i != 6));
-  write_trajectory_figure(trials, xyz_task(), dir.file("t.png"));
+  write_trajectory_figure(trials, xyz_task(), {"pre", "cor", "post"}, dir.file("t.png"));
   const cv::Mat image = cv::imread(dir.file("t.png"), cv::IMREAD_COLOR);
   ASSERT_FALSE(image.empty());
   EXPECT_EQ(image.cols, kTrajectoryColumns * kTrajectoryPanelWidth);
@@ -109,13 +112,14 @@ TEST(TrajectoryOutputs, FigureHasOnePanelPerTrialOnSharedAxes) {
 
 TEST(TrajectoryOutputs, FigureErrorsNameTheFunction) {
   TempDir dir;
-  EXPECT_THROW(write_trajectory_figure({}, xyz_task(), dir.file("t.png")), std::invalid_argument);
+  EXPECT_THROW(write_trajectory_figure({}, xyz_task(), {}, dir.file("t.png")),
+               std::invalid_argument);
   TaskReport bad_axes = xyz_task();
   bad_axes.plot_vertical = 3;
-  EXPECT_THROW(write_trajectory_figure({a_trial(0, true)}, bad_axes, dir.file("t.png")),
+  EXPECT_THROW(write_trajectory_figure({a_trial(0, true)}, bad_axes, {}, dir.file("t.png")),
                std::invalid_argument);
   try {
-    write_trajectory_figure({a_trial(0, true)}, xyz_task(), dir.file("missing/dir/t.png"));
+    write_trajectory_figure({a_trial(0, true)}, xyz_task(), {}, dir.file("missing/dir/t.png"));
     ADD_FAILURE() << "no error for an unwritable path";
   } catch (const std::runtime_error& e) {
     EXPECT_NE(std::string(e.what()).find("write_trajectory_figure: cannot write"),

@@ -12,7 +12,7 @@
 #include <optional>
 
 #include "context/color_segmentation/color_segmentation_params.hpp"
-#include "sim/render/camera_model.hpp"
+#include "data/camera_model.hpp"
 
 namespace corrmp {
 

@@ -9,7 +9,7 @@
 #include <optional>
 
 #include "context/color_segmentation/rope_end_locator.hpp"
-#include "sim/render/camera_model.hpp"
+#include "data/camera_model.hpp"
 
 namespace corrmp {
 

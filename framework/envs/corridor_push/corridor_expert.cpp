@@ -121,8 +121,8 @@ Demonstration CorridorExpert::demonstrate(Environment& environment, const Scenar
   Observation initial = env.observe(false);
   run("pre", pre_waypoints(env), p.pre_points, initial, {});
   Observation critical = env.observe(with_images);
-  demo.correction = decide(env);
-  run("cor", cor_waypoints(env, demo.correction), p.cor_points, critical, cor_slowness());
+  demo.decision = decide(env);
+  run("cor", cor_waypoints(env, demo.decision), p.cor_points, critical, cor_slowness());
   run("post", post_waypoints(env), p.post_points, env.observe(with_images), {});
 
   // The whole skill as the demonstrator's recording at a fixed rate: time is

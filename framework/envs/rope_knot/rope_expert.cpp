@@ -27,10 +27,10 @@ SegmentTrajectory segment_of(const std::string& name, const Eigen::MatrixXd& row
   return s;
 }
 
-// Offsets of the position columns from the first row (the relative cor-MP).
-Eigen::MatrixXd relative_to_start(const Eigen::MatrixXd& rows) {
+// The relative cor-MP: the task's relative columns as offsets from the first row.
+Eigen::MatrixXd relative_to_start(const Eigen::MatrixXd& rows, const TaskReport& task) {
   Eigen::MatrixXd relative = rows;
-  for (int c : {0, 1, 2, 4, 5, 6}) relative.col(c).array() -= rows(0, c);
+  for (int c : task.relative_columns) relative.col(c).array() -= rows(0, c);
   return relative;
 }
 
@@ -54,9 +54,9 @@ Demonstration RopeExpert::demonstrate(Environment& environment, const Scenario& 
   run("pre", pre);
   Observation critical = env.observe(with_images);
   const Eigen::Vector3d offset = correction_offset(env.scene());
-  demo.correction = classify_rope_correction(offset, env.params().decision_threshold);
+  demo.decision = classify_rope_correction(offset, env.params().decision_threshold);
   const Eigen::MatrixXd cor = correction_waypoints(env.scene(), offset);
-  const Eigen::MatrixXd cor_relative = relative_to_start(cor);
+  const Eigen::MatrixXd cor_relative = relative_to_start(cor, env.report());
   run("cor", cor_relative);
   Observation after_correction = env.observe(with_images);
   const Eigen::MatrixXd post = post_waypoints(task, env.scene().left_command());

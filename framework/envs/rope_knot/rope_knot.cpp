@@ -12,6 +12,7 @@ namespace corrmp {
 namespace {
 
 constexpr const char* kPhysicsFault = "physics fault";
+constexpr const char* kInvalidTrajectory = "invalid trajectory";
 
 // The grippers as the robot commands them. The left hand's drift is a
 // hardware error the rows do not know of; it shows in where the gripper is.
@@ -41,9 +42,9 @@ std::string classify_rope_correction(const Eigen::Vector3d& d, double threshold)
   return y ? "lateral" : "vertical";
 }
 
-RopeKnot::RopeKnot(const RopeKnotEnvironmentParams& params) : params_(params), scene_(params.task) {
-  scene_.reset(Scenario{});
-}
+// The scene starts in the nominal scenario.
+RopeKnot::RopeKnot(const RopeKnotEnvironmentParams& params)
+    : params_(params), scene_(params.task) {}
 
 RopeKnot::~RopeKnot() = default;
 
@@ -52,14 +53,15 @@ TaskReport RopeKnot::report() const {
   report.trajectory_columns = {"left_x",  "left_y",  "left_z",  "left_grip",
                                "right_x", "right_y", "right_z", "right_grip"};
   report.error_segments = {"pre", "cor", "post"};
-  report.error_columns = {0, 1, 2, 4, 5, 6};
+  report.error_columns = {0, 1, 2, 4, 5, 6};     // positions, not grips
+  report.relative_columns = {0, 1, 2, 4, 5, 6};  // a correction moves; the grips stay
   report.decision_segment = "cor";
   report.decision_labels = rope_correction_labels();
   report.plot_horizontal = 1;  // the left gripper seen from the robot: y right, z up
   report.plot_vertical = 2;
   report.outcome_metrics = {"knot", "enclosed"};
   report.failure_categories = {"missed enclose", "near miss", "knot lost while tightening",
-                               kPhysicsFault};
+                               kPhysicsFault, kInvalidTrajectory};
   return report;
 }
 
@@ -79,25 +81,24 @@ std::vector<SegmentInfo> RopeKnot::segments() const {
 
 Eigen::RowVectorXd RopeKnot::effector_position() const { return row_of(scene_); }
 
-Eigen::RowVectorXd RopeKnot::segment_start(const std::string& segment) const {
-  Eigen::RowVectorXd start = row_of(scene_);
-  if (segment == "cor") {  // positions are offsets; the grips stay as they are
-    for (int c : {0, 1, 2, 4, 5, 6}) start(c) = 0.0;
+bool RopeKnot::is_relative(const std::string& segment) const {
+  for (const auto& s : segments()) {
+    if (s.name == segment) return s.relative;
   }
-  return start;
+  return false;
 }
 
 std::string RopeKnot::execute(const std::string& segment, const Eigen::MatrixXd& trajectory) {
   if (!fault_.empty()) return fault_;
   if (trajectory.cols() != 8 || trajectory.rows() < 1 || !trajectory.allFinite()) {
-    fault_ = fmt::format("{}: the '{}' trajectory is not a finite {}x8 matrix", kPhysicsFault,
+    fault_ = fmt::format("{}: the '{}' trajectory is not a finite {}x8 matrix", kInvalidTrajectory,
                          segment, trajectory.rows());
     return fault_;
   }
   Eigen::MatrixXd rows = trajectory;
-  if (segment == "cor") {
+  if (is_relative(segment)) {
     const Eigen::RowVectorXd origin = row_of(scene_);
-    for (int c : {0, 1, 2, 4, 5, 6}) rows.col(c).array() += origin(c);
+    for (int c : report().relative_columns) rows.col(c).array() += origin(c);
   }
   const std::string fault = scene_.execute(rows);
   if (segment == "pre" && fault.empty()) critical_offset_ = scene_.end_offset();

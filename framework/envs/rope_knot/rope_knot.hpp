@@ -60,7 +60,6 @@ class RopeKnot : public Environment {
   void reset(const Scenario& scenario) override;
   std::vector<SegmentInfo> segments() const override;
   Eigen::RowVectorXd effector_position() const override;
-  Eigen::RowVectorXd segment_start(const std::string& segment) const override;
   std::string execute(const std::string& segment, const Eigen::MatrixXd& trajectory) override;
   Observation observe(bool with_image) override;
   Outcome outcome() const override;
@@ -73,6 +72,8 @@ class RopeKnot : public Environment {
   const RopeKnotScene& scene() const { return scene_; }
 
  private:
+  bool is_relative(const std::string& segment) const;
+
   RopeKnotEnvironmentParams params_;
   RopeKnotScene scene_;
   std::unique_ptr<HeadCamera> camera_;

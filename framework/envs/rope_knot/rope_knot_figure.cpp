@@ -120,9 +120,10 @@ void write_knotting_figure(const std::vector<EvaluatedTrial>& trials,
   put_text(canvas, "grey: training demonstrations; green: knot tied", {10, y});
   put_text(canvas, "red: missed enclose", {10, y + 20}, 0.4, failure_colour("missed enclose"));
   put_text(canvas, "yellow: near miss", {200, y + 20}, 0.4, failure_colour("near miss"));
-  put_text(canvas, "purple: knot lost while tightening", {360, y + 20}, 0.4,
+  put_text(canvas, "purple: knot lost while tightening", {330, y + 20}, 0.4,
            failure_colour("knot lost"));
-  put_text(canvas, "dark grey: physics fault", {640, y + 20}, 0.4, failure_colour("physics"));
+  put_text(canvas, "dark grey: physics fault, invalid trajectory", {560, y + 20}, 0.4,
+           failure_colour("physics"));
   write_png(canvas, png_path, "write_knotting_figure");
 }
 

@@ -48,16 +48,19 @@ struct RopeKnotMotion {
 
   template <class Fields>
   void describe(Fields& f) {
-    f("right_loop", right_loop, "right gripper over the bar, 3 values per point (m)");
-    f("pinch_approach", pinch_approach, "left gripper before taking the standing part (m)");
-    f("pinch", pinch, "left gripper taking the standing part (m)");
-    f("left_pull", left_pull, "left gripper holding the loop open (m)");
-    f("right_tuck", right_tuck, "right gripper crossing and tucking, 3 values per point (m)");
-    f("left_retreat", left_retreat, "left gripper after letting go (m)");
-    f("beside_end", beside_end, "left gripper beside the free end (m)");
-    f("nominal_end", nominal_end, "left gripper at the critical point (m)");
-    f("tighten", tighten, "left gripper at the end of tightening (m)");
-    f("clear", clear, "left gripper after releasing (m)");
+    f("right_loop", right_loop,
+      "right gripper over the bar, 3 values per point, at least one point (m)");
+    f("pinch_approach", pinch_approach, "left gripper before taking the standing part (m)",
+      size_is(3));
+    f("pinch", pinch, "left gripper taking the standing part (m)", size_is(3));
+    f("left_pull", left_pull, "left gripper holding the loop open (m)", size_is(3));
+    f("right_tuck", right_tuck,
+      "right gripper crossing and tucking, 3 values per point, at least one point (m)");
+    f("left_retreat", left_retreat, "left gripper after letting go (m)", size_is(3));
+    f("beside_end", beside_end, "left gripper beside the free end (m)", size_is(3));
+    f("nominal_end", nominal_end, "left gripper at the critical point (m)", size_is(3));
+    f("tighten", tighten, "left gripper at the end of tightening (m)", size_is(3));
+    f("clear", clear, "left gripper after releasing (m)", size_is(3));
   }
 };
 
@@ -90,7 +93,7 @@ struct RopeKnotParams {
     f("world", world, "Bullet soft-rigid world");
     f("rope", rope, "the rope; its last end_length is coloured");
     f("gripper", gripper, "both anchoring grippers");
-    f("bar_centre", bar_centre, "centre of the bar (m); the bar runs along y");
+    f("bar_centre", bar_centre, "centre of the bar (m); the bar runs along y", size_is(3));
     f("bar_radius", bar_radius, "bar radius (m)", positive());
     f("bar_length", bar_length, "bar length (m)", positive());
     f("bar_friction", bar_friction, "bar friction (times the rope's)", in_range(0.0, 2.0));
@@ -99,14 +102,16 @@ struct RopeKnotParams {
       at_least(0.0));
     f("load_length", load_length, "rope length the weight is spread over (m)", positive());
     f("span", span, "nominal rope length between the weight and the right gripper (m)", positive());
-    f("right_start_offset", right_start_offset, "right gripper start, from the bar centre (m)");
-    f("left_start_offset", left_start_offset, "left gripper start, from the bar centre (m)");
+    f("right_start_offset", right_start_offset, "right gripper start, from the bar centre (m)",
+      size_is(3));
+    f("left_start_offset", left_start_offset, "left gripper start, from the bar centre (m)",
+      size_is(3));
     f("grasp_range", grasp_range,
       "uniform +- range of where the right gripper holds the rope along it (m)", at_least(0.0));
     f("span_range", span_range, "uniform +- range of the weight-gripper rope length (m)",
       at_least(0.0));
     f("drift_range", drift_range, "uniform +- range of the left hand's drift in x, y, z (m)",
-      at_least(0.0));
+      size_is(3).at_least(0.0));
     f("settle_time", settle_time, "time the rope settles after a reset (s)", at_least(0.0));
     f("min_winding", min_winding, "turns about the bar a knot must make", at_least(0.0));
     f("pre_points", pre_points, "rows of the pre-MP segment", at_least(2));

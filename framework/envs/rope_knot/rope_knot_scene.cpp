@@ -7,6 +7,8 @@
 #include <algorithm>
 #include <cmath>
 #include <stdexcept>
+#include <string>
+#include <utility>
 
 #include "sim/soft/soft_render.hpp"
 
@@ -23,6 +25,49 @@ Eigen::Vector3d vec3(const std::vector<double>& v, const char* what) {
 double value_or_zero(const Scenario& scenario, const std::string& key) {
   const auto it = scenario.find(key);
   return it == scenario.end() ? 0.0 : it->second;
+}
+
+// The rope nodes of the weight's start and of the right gripper's grasp for a
+// scenario's offsets.
+struct LoadAndGrasp {
+  int load = 0;
+  int grasp = 0;
+  bool fits(int nodes) const { return load >= 0 && grasp > load + 2 && grasp < nodes - 2; }
+};
+
+LoadAndGrasp load_and_grasp(const RopeKnotParams& params, double grasp_offset, double span_offset) {
+  const double step = params.rope.length / (params.rope.nodes - 1);
+  LoadAndGrasp out;
+  out.load = static_cast<int>(std::lround((params.load_arc - span_offset) / step));
+  out.grasp = static_cast<int>(std::lround((params.load_arc + params.span + grasp_offset) / step));
+  return out;
+}
+
+// A list of 3 values per point, with at least one point.
+void check_points(const std::vector<double>& v, const char* key) {
+  if (v.empty() || v.size() % 3 != 0) {
+    throw std::invalid_argument(fmt::format(
+        "RopeKnotScene: motion.{} needs 3 values per point and at least one point, got {} values",
+        key, v.size()));
+  }
+}
+
+// Every scenario sample() can draw must fit the rope (reset's condition), at
+// the corners of the grasp and span ranges.
+void check_scenarios_fit(const RopeKnotParams& params) {
+  for (const double grasp_offset : {-params.grasp_range, params.grasp_range}) {
+    for (const double span_offset : {-params.span_range, params.span_range}) {
+      const LoadAndGrasp nodes = load_and_grasp(params, grasp_offset, span_offset);
+      if (!nodes.fits(params.rope.nodes)) {
+        throw std::invalid_argument(fmt::format(
+            "RopeKnotScene: grasp_range {} and span_range {} (with load_arc, span, rope.length): "
+            "at grasp_offset {} and span_offset {} the weight at node {} and grasp node {} do not "
+            "fit a rope of {} nodes",
+            params.grasp_range, params.span_range, grasp_offset, span_offset, nodes.load,
+            nodes.grasp, params.rope.nodes));
+      }
+    }
+  }
 }
 
 // Fingers pointing down (-z), closing along x.
@@ -46,6 +91,20 @@ RopeKnotScene::RopeKnotScene(const RopeKnotParams& params) : params_(params) {
   vec3(params.right_start_offset, "right_start_offset");
   vec3(params.left_start_offset, "left_start_offset");
   vec3(params.drift_range, "drift_range");
+  const RopeKnotMotion& m = params.motion;
+  for (const auto& [key, v] : {std::pair{"pinch_approach", &m.pinch_approach},
+                               {"pinch", &m.pinch},
+                               {"left_pull", &m.left_pull},
+                               {"left_retreat", &m.left_retreat},
+                               {"beside_end", &m.beside_end},
+                               {"nominal_end", &m.nominal_end},
+                               {"tighten", &m.tighten},
+                               {"clear", &m.clear}}) {
+    vec3(*v, (std::string("motion.") + key).c_str());
+  }
+  check_points(m.right_loop, "right_loop");
+  check_points(m.right_tuck, "right_tuck");
+  check_scenarios_fit(params);
   reset({});
 }
 
@@ -74,12 +133,11 @@ void RopeKnotScene::reset(const Scenario& scenario) {
   const RopeParams& rp = params_.rope;
   const int n = rp.nodes;
   const double step = rp.length / (n - 1);
-  const double span_offset = value_or_zero(scenario, "span_offset");
-  const double grasp_offset = value_or_zero(scenario, "grasp_offset");
-  const int load = static_cast<int>(std::lround((params_.load_arc - span_offset) / step));
-  const int grasp =
-      static_cast<int>(std::lround((params_.load_arc + params_.span + grasp_offset) / step));
-  if (load < 0 || grasp <= load + 2 || grasp >= n - 2) {
+  const LoadAndGrasp nodes = load_and_grasp(params_, value_or_zero(scenario, "grasp_offset"),
+                                            value_or_zero(scenario, "span_offset"));
+  const int load = nodes.load;
+  const int grasp = nodes.grasp;
+  if (!nodes.fits(n)) {
     throw std::invalid_argument(fmt::format(
         "RopeKnotScene::reset: weight at node {} and grasp node {} do not fit a rope of {} nodes",
         load, grasp, n));
@@ -129,6 +187,12 @@ std::string RopeKnotScene::set_grips(bool left_closed, bool right_closed) {
   if (right_closed && !right_->closed()) right_->close();
   if (!left_closed && left_->closed()) {
     left_->open();
+    // Letting go of the standing part: the enclose record is that of a later
+    // close (the one meant for the free end).
+    if (!drifting_) {
+      enclosed_ = -1;
+      near_miss_ = false;
+    }
     drifting_ = true;
   }
   if (!right_closed && right_->closed()) right_->open();

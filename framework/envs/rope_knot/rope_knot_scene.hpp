@@ -30,6 +30,9 @@ struct RopeKnotOutcome {
 
 class RopeKnotScene {
  public:
+  // Checks the parameters (3-vectors, motion lists of whole points, every
+  // scenario of the grasp and span ranges fits the rope; std::invalid_argument
+  // naming the key otherwise) and resets to the nominal scenario.
   explicit RopeKnotScene(const RopeKnotParams& params);
   ~RopeKnotScene();
 
@@ -74,7 +77,9 @@ class RopeKnotScene {
   std::unique_ptr<AnchorGripper> left_;
   std::unique_ptr<AnchorGripper> right_;
   Eigen::Vector3d drift_ = Eigen::Vector3d::Zero();
-  int enclosed_ = -1;       // nodes anchored at the left gripper's last close
+  // Nodes anchored at the left gripper's last close after it let go of the
+  // standing part (-1: no such close yet); the pre-MP grab does not count.
+  int enclosed_ = -1;
   bool near_miss_ = false;  // at that close
   bool drifting_ = false;   // the left gripper has opened once
   std::string fault_;

@@ -22,7 +22,7 @@
 //   Z = f n / (f - d (f - n)).
 #pragma once
 
-#include "sim/render/camera_model.hpp"
+#include "data/camera_model.hpp"
 
 #include <Eigen/Geometry>
 

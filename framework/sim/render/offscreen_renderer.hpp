@@ -11,7 +11,7 @@
 // renderer must not be used by two threads at once.
 #pragma once
 
-#include "sim/render/camera_model.hpp"
+#include "data/camera_model.hpp"
 #include "sim/render/render_scene.hpp"
 #include "sim/render/rgbd_image.hpp"
 

@@ -26,6 +26,9 @@ AnchorGripper::AnchorGripper(Rope& rope, const AnchorGripperParams& params,
   if (!orientation.allFinite() || !(orientation.transpose() * orientation).isIdentity(1e-6)) {
     throw std::invalid_argument("AnchorGripper: orientation is not a rotation matrix");
   }
+  if (params.colour.size() != 3) {
+    throw std::invalid_argument("AnchorGripper: colour needs 3 values (RGB)");
+  }
   shape_ = std::make_unique<btSphereShape>(0.01);
   btRigidBody::btRigidBodyConstructionInfo info(0, nullptr, shape_.get());
   body_ = std::make_unique<btRigidBody>(info);

@@ -44,7 +44,7 @@ struct AnchorGripperParams {
     f("max_speed", max_speed, "largest speed when tracking waypoints (m/s)", positive());
     f("release_time", release_time, "time over which opening ramps the anchors out (s)",
       positive());
-    f("colour", colour, "RGB in [0, 1]", in_range(0.0, 1.0));
+    f("colour", colour, "RGB in [0, 1]", size_is(3).at_least(0.0).at_most(1.0));
   }
 };
 

@@ -17,6 +17,7 @@ Eigen::Vector3d eigen(const btVector3& v) { return Eigen::Vector3d(v.x(), v.y(),
 btVector3 bullet(const Eigen::Vector3d& v) { return btVector3(v.x(), v.y(), v.z()); }
 
 // Closest points of segments [p0, p1] and [q0, q1]: parameters s and t in [0, 1].
+// A zero-length segment is a point (its parameter is 0).
 void closest_parameters(const Eigen::Vector3d& p0, const Eigen::Vector3d& p1,
                         const Eigen::Vector3d& q0, const Eigen::Vector3d& q1, double& s,
                         double& t) {
@@ -28,6 +29,21 @@ void closest_parameters(const Eigen::Vector3d& p0, const Eigen::Vector3d& p1,
   const double f = d2.dot(r);
   const double c = d1.dot(r);
   const double b = d1.dot(d2);
+  constexpr double kTiny = 1e-24;  // squared length of a zero-length segment
+  if (a <= kTiny && e <= kTiny) {
+    s = t = 0.0;
+    return;
+  }
+  if (a <= kTiny) {
+    s = 0.0;
+    t = std::clamp(f / e, 0.0, 1.0);
+    return;
+  }
+  if (e <= kTiny) {
+    t = 0.0;
+    s = std::clamp(-c / a, 0.0, 1.0);
+    return;
+  }
   const double denom = a * e - b * b;
   s = denom > 1e-12 * a * e ? std::clamp((b * f - c * e) / denom, 0.0, 1.0) : 0.0;
   t = (b * s + f) / e;
@@ -61,7 +77,10 @@ Rope::Rope(SoftWorld& world, const RopeParams& params,
     throw std::invalid_argument(
         fmt::format("Rope: {} positions for {} nodes (at least 3)", n, params.nodes));
   }
-  body_ = new btSoftBody(&world.world_info());
+  if (params.colour.size() != 3 || params.end_colour.size() != 3) {
+    throw std::invalid_argument("Rope: colour and end_colour need 3 values (RGB)");
+  }
+  body_ = std::make_unique<btSoftBody>(&world.world_info());
   // Nodes take the first material: stretch links use it.
   btSoftBody::Material* stretch = body_->appendMaterial();
   stretch->m_kLST = params.stretch_stiffness;
@@ -93,14 +112,11 @@ Rope::Rope(SoftWorld& world, const RopeParams& params,
   body_->getCollisionShape()->setMargin(world.to_units(params.radius));
   body_->setActivationState(DISABLE_DEACTIVATION);
   update_constants();
-  world.add_soft_body(body_);
-  world.add_post_step(body_, [this] { self_contact(); });
+  world.add_soft_body(body_.get());
+  world.add_post_step(body_.get(), [this] { self_contact(); });
 }
 
-Rope::~Rope() {
-  world_.remove_soft_body(body_);
-  delete body_;
-}
+Rope::~Rope() { world_.remove_soft_body(body_.get()); }
 
 int Rope::node_count() const { return body_->m_nodes.size(); }
 

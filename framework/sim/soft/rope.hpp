@@ -6,6 +6,7 @@
 #pragma once
 
 #include <Eigen/Core>
+#include <memory>
 #include <vector>
 
 #include "core/config/field_rule.hpp"
@@ -43,8 +44,9 @@ struct RopeParams {
     f("anchor_hardness", anchor_hardness, "anchor stiffness; below 1 (at 1 it cancels itself)",
       in_range(0.0, 0.99));
     f("iterations", iterations, "position solver iterations per step", in_range(1, 200));
-    f("colour", colour, "RGB in [0, 1]", in_range(0.0, 1.0));
-    f("end_colour", end_colour, "RGB of the coloured free end, in [0, 1]", in_range(0.0, 1.0));
+    f("colour", colour, "RGB in [0, 1]", size_is(3).at_least(0.0).at_most(1.0));
+    f("end_colour", end_colour, "RGB of the coloured free end, in [0, 1]",
+      size_is(3).at_least(0.0).at_most(1.0));
     f("end_length", end_length, "length of the coloured free end (m)", at_least(0.0));
   }
 };
@@ -88,7 +90,7 @@ class Rope {
 
   SoftWorld& world_;
   RopeParams params_;
-  btSoftBody* body_ = nullptr;
+  std::unique_ptr<btSoftBody> body_;  // removed from the world before it is destroyed
   std::vector<double> node_mass_;
   std::vector<double> rest_length_;  // per link, Bullet units
 };

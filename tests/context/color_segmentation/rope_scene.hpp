@@ -8,7 +8,7 @@
 #include <vector>
 
 #include "core/seeds.hpp"
-#include "sim/render/camera_model.hpp"
+#include "data/camera_model.hpp"
 #include "sim/render/render_scene.hpp"
 
 namespace corrmp::test {

@@ -1,13 +1,18 @@
 // Tests of the simulated rope-knotting task (paper, Section IV-C): the
 // scripted half hitch with the correction ties a knot, without it a strongly
-// perturbed scenario misses the enclose, a trial replays bitwise. Two disabled
-// tools: the success survey and pictures of a trial.
+// perturbed scenario misses the enclose, a post-MP that never closes reports a
+// missed enclose, a trial replays bitwise, bad parameters fail at
+// construction. Two disabled tools: the success survey and pictures of a trial.
 #include <gtest/gtest.h>
 
 #include <cmath>
 #include <cstdlib>
+#include <filesystem>
+#include <fstream>
 #include <map>
 
+#include "core/config/config_loader.hpp"
+#include "core/config/config_reader.hpp"
 #include "envs/rope_knot/rope_knot_scene.hpp"
 #include "envs/rope_knot/rope_knot_script.hpp"
 #include "sim/render/offscreen_renderer.hpp"
@@ -64,14 +69,35 @@ TEST(RopeKnotScene, WithoutCorrectionAStronglyPerturbedScenarioMisses) {
   EXPECT_EQ(missed.failure, "missed enclose");
 }
 
+TEST(RopeKnotScene, APostMpThatNeverClosesTheLeftGripperMissesTheEnclose) {
+  // The left gripper did close once, on the standing part during the pre-MP;
+  // that grab is not the enclose of the free end.
+  RopeKnotScene scene(RopeKnotParams{});
+  ASSERT_EQ(scene.execute(pre_waypoints(scene.params())), "");
+  Eigen::MatrixXd post = post_waypoints(scene.params(), scene.left_command());
+  post.col(3).setZero();
+  scene.execute(post);
+  EXPECT_FALSE(scene.left_closed());
+  const RopeKnotOutcome outcome = scene.outcome();
+  EXPECT_FALSE(outcome.knot);
+  EXPECT_EQ(outcome.failure, "missed enclose");
+}
+
+// The whole scripted trial (reset, pre-MP, correction, post-MP, outcome) in
+// two fresh scenes: the same outcome and bitwise the same rope.
 TEST(RopeKnotScene, ATrialReplaysBitwise) {
   auto run = [] {
     RopeKnotScene scene(RopeKnotParams{});
-    scripted_trial(scene, perturbed(0.01, -0.02, 0.01, -0.01, 0.01), true);
-    return scene.rope_nodes();
+    const RopeKnotOutcome outcome =
+        scripted_trial(scene, perturbed(0.01, -0.02, 0.01, -0.01, 0.01), true);
+    return std::make_pair(outcome, scene.rope_nodes());
   };
-  const auto a = run();
-  const auto b = run();
+  const auto [outcome_a, a] = run();
+  const auto [outcome_b, b] = run();
+  EXPECT_EQ(outcome_a.knot, outcome_b.knot);
+  EXPECT_EQ(outcome_a.failure, outcome_b.failure);
+  EXPECT_EQ(outcome_a.report.determinant, outcome_b.report.determinant);
+  EXPECT_EQ(outcome_a.report.winding_number, outcome_b.report.winding_number);
   ASSERT_EQ(a.size(), b.size());
   for (size_t i = 0; i < a.size(); ++i) {
     EXPECT_EQ(a[i].x(), b[i].x());
@@ -92,6 +118,57 @@ TEST(RopeKnotScene, SampledScenariosStayInTheirRanges) {
     EXPECT_LE(std::abs(s.at("drift_y")), params.drift_range[1]);
     EXPECT_LE(std::abs(s.at("drift_z")), params.drift_range[2]);
   }
+}
+
+// The message of the std::invalid_argument the constructor throws, or "".
+std::string construction_error(const RopeKnotParams& params) {
+  try {
+    RopeKnotScene scene(params);
+  } catch (const std::invalid_argument& e) {
+    return e.what();
+  }
+  return "";
+}
+
+TEST(RopeKnotScene, MotionListsOfPartPointsFailAtConstruction) {
+  RopeKnotParams params;
+  params.motion.right_loop.pop_back();
+  EXPECT_NE(construction_error(params).find("right_loop"), std::string::npos);
+  params = RopeKnotParams{};
+  params.motion.right_tuck.clear();
+  EXPECT_NE(construction_error(params).find("right_tuck"), std::string::npos);
+  params = RopeKnotParams{};
+  params.motion.tighten.push_back(0.0);
+  EXPECT_NE(construction_error(params).find("tighten"), std::string::npos);
+}
+
+TEST(RopeKnotScene, ScenarioRangesThatDoNotFitTheRopeFailAtConstruction) {
+  RopeKnotParams params;
+  // At grasp_offset +0.2 the grasp node is past the end of the 0.95 m rope.
+  params.grasp_range = 0.2;
+  EXPECT_NE(construction_error(params).find("grasp_range"), std::string::npos);
+  // At span_offset +0.1 the weight would start before the rope's first node.
+  params = RopeKnotParams{};
+  params.span_range = 0.1;
+  EXPECT_NE(construction_error(params).find("span_range"), std::string::npos);
+}
+
+// A colour of two values is a config error (and no out-of-bounds read later).
+TEST(RopeKnotScene, ConfigRejectsShortColoursAndVectors) {
+  const std::string path =
+      (std::filesystem::temp_directory_path() /
+       ("rope_knot_scene_test_" +
+        std::to_string(::testing::UnitTest::GetInstance()->random_seed()) + ".yaml"))
+          .string();
+  for (const char* yaml :
+       {"gripper: {colour: [0.1, 0.2]}\n", "rope: {end_colour: [0.1, 0.2, 0.3, 0.4]}\n",
+        "drift_range: [0.01, 0.01]\n", "motion: {nominal_end: [0.0, 0.1]}\n"}) {
+    std::ofstream(path) << yaml;
+    ConfigNode root = load_config(path, {});
+    RopeKnotParams params;
+    EXPECT_THROW(ConfigReader::read(root, "", params), ConfigError) << yaml;
+  }
+  std::filesystem::remove(path);
 }
 
 TEST(RopeKnotScene, ExecuteRefusesRowsOfTheWrongWidth) {

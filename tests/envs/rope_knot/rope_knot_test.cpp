@@ -42,7 +42,7 @@ TEST(RopeKnot, TheExpertsSegmentsReplayThroughTheEnvironment) {
   // The correction is relative: it starts at zero offset, the grips as they are.
   EXPECT_LT(cor.y.row(0).head<3>().norm(), 1e-12);
   EXPECT_EQ(cor.y(0, 7), 1.0);  // the right gripper still holds the rope
-  EXPECT_EQ(demo.correction,
+  EXPECT_EQ(demo.decision,
             classify_rope_correction(cor.y.row(cor.y.rows() - 1).head<3>().transpose(),
                                      env.params().decision_threshold));
   EXPECT_EQ(full.y.rows(), pre.y.rows() + cor.y.rows() + post.y.rows());
@@ -101,13 +101,13 @@ TEST(RopeKnot, ATrialIsDeterministic) {
   EXPECT_EQ(runs[0], runs[1]);  // bit for bit
 }
 
-TEST(RopeKnot, ABrokenTrajectoryIsAPhysicsFaultNotACrash) {
+TEST(RopeKnot, ABrokenTrajectoryIsAFailedTrialNotACrash) {
   RopeKnot env{RopeKnotEnvironmentParams{}};
   env.reset({});
   Eigen::MatrixXd bad = Eigen::MatrixXd::Zero(3, 8);
   bad(1, 2) = std::numeric_limits<double>::quiet_NaN();
   const std::string failure = env.execute("pre", bad);
-  EXPECT_EQ(failure.rfind("physics fault", 0), 0u) << failure;
+  EXPECT_EQ(failure.rfind("invalid trajectory", 0), 0u) << failure;
   EXPECT_FALSE(env.outcome().success);
   EXPECT_EQ(env.outcome().failure, failure);
   EXPECT_EQ(env.execute("post", Eigen::MatrixXd::Zero(2, 8)), failure);  // stays failed

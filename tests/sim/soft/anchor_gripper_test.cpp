@@ -87,5 +87,12 @@ TEST(AnchorGripper, AClosedGripperCarriesTheRopeAndReleasesItGradually) {
   EXPECT_LT(std::abs(h.rope.node(20).x()), 0.03);
 }
 
+TEST(AnchorGripper, AColourOfTwoValuesIsRefused) {
+  Hanging h;
+  AnchorGripperParams params;
+  params.colour = {0.25, 0.25};
+  EXPECT_THROW(AnchorGripper(h.rope, params, side_grasp(), {0, 0, 0.795}), std::invalid_argument);
+}
+
 }  // namespace
 }  // namespace corrmp

@@ -86,6 +86,34 @@ TEST(Rope, SelfContactKeepsCrossingPiecesApart) {
   EXPECT_GT(closest_crossing_distance(), 0.008);
 }
 
+// Two coincident nodes make a zero-length segment; the self-contact pass must
+// treat it as a point (it divided by its length).
+TEST(Rope, SelfContactWithAZeroLengthSegmentStaysFinite) {
+  SoftWorld world(SoftWorldParams{});
+  RopeParams params;
+  params.length = 0.2;
+  params.nodes = 21;
+  Rope rope(world, params, straight_rope(params, {0, 0, 1}, {1, 0, 0}));
+  // Nodes 10 and 11 both 4 mm above segment 5-6: closer than two radii.
+  const Eigen::Vector3d above = rope.node(5) + Eigen::Vector3d(0.005, 0, 0.004);
+  rope.set_node(10, above);
+  rope.set_node(11, above);
+  rope.self_contact();
+  for (int i = 0; i < rope.node_count(); ++i) {
+    ASSERT_TRUE(rope.node(i).allFinite()) << "node " << i;
+  }
+  // The pass pushed the point away from the segment below it.
+  EXPECT_GT(rope.node(10).z() - rope.node(5).z(), 0.004);
+}
+
+TEST(Rope, ColoursNeedThreeValues) {
+  SoftWorld world(SoftWorldParams{});
+  RopeParams params;
+  params.end_colour = {0.9, 0.1};
+  EXPECT_THROW(Rope(world, params, straight_rope(params, {0, 0, 1}, {1, 0, 0})),
+               std::invalid_argument);
+}
+
 TEST(Rope, TwoRunsAreBitwiseEqual) {
   auto run = [] {
     SoftWorld world(SoftWorldParams{});

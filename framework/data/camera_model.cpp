@@ -1,6 +1,6 @@
 // Pinhole camera model, look-at poses, projection and back-projection (see
 // camera_model.hpp for the conventions).
-#include "sim/render/camera_model.hpp"
+#include "data/camera_model.hpp"
 
 #include <fmt/format.h>
 

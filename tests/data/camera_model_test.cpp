@@ -1,6 +1,6 @@
 // Tests of the head-camera pinhole model: intrinsics from a field of view, look-at
 // poses in the OpenCV convention, projection and back-projection.
-#include "sim/render/camera_model.hpp"
+#include "data/camera_model.hpp"
 
 #include <gtest/gtest.h>
 
