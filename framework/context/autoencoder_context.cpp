@@ -118,6 +118,7 @@ void AutoencoderContext::write_outputs(const std::string& directory,
     write_reconstruction_grid(originals, reconstruct_images(*model_, originals),
                               directory + "/autoencoder_reconstructions.png");
   }
+  if (params_.plot_state.empty()) return;
   std::vector<double> x;
   std::vector<cv::Mat> images;
   for (const auto& demo : demos) {

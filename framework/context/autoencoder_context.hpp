@@ -19,13 +19,14 @@ namespace corrmp {
 struct AutoencoderContextParams {
   std::vector<std::string> segments{"cor", "post"};
   AutoencoderParams network;
-  std::string plot_state = "corridor_x";
+  std::string plot_state;
 
   template <class Fields>
   void describe(Fields& f) {
     f("segments", segments, "segments whose context is the latent of their start image");
     f("network", network, "the autoencoder and its training (the paper's values by default)");
-    f("plot_state", plot_state, "state value the latent plot puts on its x axis");
+    f("plot_state", plot_state,
+      "state value the latent plot puts on its x axis ('' : no latent plot)");
   }
 };
 

@@ -61,7 +61,8 @@ bool ColorSegmentationContext::wanted(const std::string& segment) const {
 Eigen::VectorXd ColorSegmentationContext::extract(const std::string& segment,
                                                   const Observation& observation) {
   if (!wanted(segment)) return Eigen::VectorXd();
-  ++extractions_;
+  Accuracy& accuracy = evaluating_ ? evaluation_ : demonstrations_;
+  ++accuracy.extractions;
   const Eigen::Vector3d gripper = state_vector(observation, params_.gripper_state);
   const std::optional<LocatedBlob> blob = locate(observation, params_.segmentation, noise_);
   if (!blob) {
@@ -69,23 +70,29 @@ Eigen::VectorXd ColorSegmentationContext::extract(const std::string& segment,
     spdlog::debug("color_segmentation: no rope end found at the start of '{}'", segment);
     return Eigen::VectorXd::Zero(3);
   }
-  ++found_;
+  ++accuracy.found;
   const Eigen::Vector3d relative = blob->position_world - gripper;
   if (!params_.truth_state.empty()) {
-    errors_m_.push_back((relative - state_vector(observation, params_.truth_state)).norm());
+    accuracy.errors_m.push_back((relative - state_vector(observation, params_.truth_state)).norm());
   }
   return relative;
 }
 
+void ColorSegmentationContext::add_metrics(const Accuracy& accuracy, const std::string& prefix,
+                                           std::vector<std::pair<std::string, double>>& out) {
+  if (accuracy.extractions == 0) return;
+  out.emplace_back(prefix + "context_found_rate",
+                   static_cast<double>(accuracy.found) / accuracy.extractions);
+  if (accuracy.errors_m.empty()) return;
+  out.emplace_back(prefix + "context_error_median_mm", 1000.0 * median(accuracy.errors_m));
+  out.emplace_back(prefix + "context_error_max_mm",
+                   1000.0 * *std::max_element(accuracy.errors_m.begin(), accuracy.errors_m.end()));
+}
+
 std::vector<std::pair<std::string, double>> ColorSegmentationContext::metrics() const {
   std::vector<std::pair<std::string, double>> out;
-  if (extractions_ == 0) return out;
-  out.emplace_back("context_found_rate", static_cast<double>(found_) / extractions_);
-  if (!errors_m_.empty()) {
-    out.emplace_back("context_error_median_mm", 1000.0 * median(errors_m_));
-    out.emplace_back("context_error_max_mm",
-                     1000.0 * *std::max_element(errors_m_.begin(), errors_m_.end()));
-  }
+  add_metrics(evaluation_, "", out);
+  add_metrics(demonstrations_, "demonstrations_", out);
   return out;
 }
 

@@ -1,9 +1,12 @@
 // Context extractor `color_segmentation` (paper, Section IV-C "Knotting with
 // the real robot"): the rope end is found in the head camera's RGB-D image by
 // colour segmentation and clustering, back-projected with the depth and the
-// camera model, and given relative to the gripper mid-point (which the robot
-// knows from its own joints). Where the observation also holds the true
-// relative position, the extractor measures its own accuracy against it.
+// camera model, and given relative to the gripper mid-point, read from the
+// observation's state (in simulation the true finger mid-point: as if the
+// robot also saw its gripper, so a hand's drift shows in the context). Where
+// the observation also holds the true relative position, the extractor
+// measures its own accuracy against it, apart for the demonstrations and for
+// the evaluation.
 #pragma once
 
 #include <string>
@@ -47,17 +50,28 @@ class ColorSegmentationContext : public ContextExtractor {
   bool needs_images() const override { return true; }
   void write_outputs(const std::string& directory,
                      const std::vector<Demonstration>& demos) override;
-  // context_found_rate, context_error_median_mm and context_error_max_mm
-  // over every extraction so far (demonstrations and evaluation trials).
+  void start_evaluation() override { evaluating_ = true; }
+  // Over the evaluation's extractions: context_found_rate (the rope end was
+  // seen), context_error_median_mm and context_error_max_mm (of the seen
+  // ones, against the true offset); the same prefixed demonstrations_ over
+  // the demonstrations'.
   std::vector<std::pair<std::string, double>> metrics() const override;
 
  private:
+  // Extractions and their accuracy, of one phase.
+  struct Accuracy {
+    int extractions = 0, found = 0;
+    std::vector<double> errors_m;
+  };
+
   bool wanted(const std::string& segment) const;
+  static void add_metrics(const Accuracy& accuracy, const std::string& prefix,
+                          std::vector<std::pair<std::string, double>>& out);
 
   ColorSegmentationContextParams params_;
   Rng noise_;
-  int extractions_ = 0, found_ = 0;
-  std::vector<double> errors_m_;
+  bool evaluating_ = false;
+  Accuracy demonstrations_, evaluation_;
 };
 
 }  // namespace corrmp

@@ -37,7 +37,10 @@ class ContextExtractor {
   virtual bool needs_images() const = 0;
   // Writes what a researcher looks at (figures, models) into the run directory.
   virtual void write_outputs(const std::string&, const std::vector<Demonstration>&) {}
-  // Measurements of the fit (name, value), recorded as run metrics.
+  // Called once before the evaluation's trials: later extractions are of
+  // scenarios never seen in training.
+  virtual void start_evaluation() {}
+  // Measurements (name, value), recorded as run metrics after the evaluation.
   virtual std::vector<std::pair<std::string, double>> metrics() const { return {}; }
 };
 

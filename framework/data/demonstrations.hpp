@@ -65,8 +65,12 @@ class DemonstrationSource {
   virtual std::vector<std::string> segments() const { return {}; }
   // Sources whose demonstrations carry their own contexts (no extractor needed).
   virtual bool provides_contexts() const { return false; }
-  // Sources that emulate an expert in an environment need one.
+  // Sources that emulate an expert in an environment need one; the type
+  // they demonstrate in ("" any).
   virtual bool needs_environment() const { return false; }
+  virtual std::string environment_type() const { return ""; }
+  // Whether the start observations carry camera images.
+  virtual bool records_images() const { return false; }
   // Whether demonstrate() works: an expert shows one given scenario (the
   // evaluation's reference for the expected decision and the trajectory errors).
   virtual bool can_demonstrate() const { return false; }

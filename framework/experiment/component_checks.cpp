@@ -52,6 +52,14 @@ Located locate(const ComponentSpec& spec, const std::string& value) {
   return {spec.node->find("type")->where(), spec.path + ".type"};
 }
 
+// Where a component section states `key`; its type line when it does not.
+Located locate_key(const ComponentSpec& spec, const std::string& key) {
+  const ConfigNode* node = spec.node->find(key);
+  if (node != nullptr && node->where().file != "<default>")
+    return {node->where(), spec.path + "." + key};
+  return {spec.node->find("type")->where(), spec.path + ".type"};
+}
+
 void check_policy_data(const Experiment& e) {
   const std::vector<std::string> available = e.demonstrations->segments();
   if (available.empty()) return;  // only the data tells
@@ -98,6 +106,26 @@ void check_extractor_segments(const Experiment& e) {
   }
 }
 
+void check_environment_type(const Experiment& e) {
+  const std::string wanted = e.demonstrations->environment_type();
+  if (wanted.empty() || wanted == e.config.environment->type) return;
+  const ConfigNode* type = e.config.demonstrations->node->find("type");
+  throw ConfigError(type->where(), "demonstrations.type",
+                    fmt::format("'{}' demonstrates in a '{}' environment, not in '{}'",
+                                e.config.demonstrations->type, wanted, e.config.environment->type));
+}
+
+void check_images(const Experiment& e) {
+  if (!e.context_extractor->needs_images() || e.demonstrations->records_images()) return;
+  const Located at = locate_key(*e.config.demonstrations, "images");
+  throw ConfigError(
+      at.where, at.path,
+      fmt::format("the context extractor '{}' reads camera images, but the "
+                  "demonstrations of '{}' record none{}",
+                  e.config.context->type, e.config.demonstrations->type,
+                  e.config.demonstrations->node->find("images") ? ": set images: true" : ""));
+}
+
 void check_expert(const Experiment& e) {
   if (e.demonstrations->can_demonstrate()) return;
   const ConfigNode* type = e.config.demonstrations->node->find("type");
@@ -111,7 +139,9 @@ void check_expert(const Experiment& e) {
 
 void check_components(const Experiment& experiment) {
   if (experiment.policy && experiment.demonstrations) check_policy_data(experiment);
+  if (experiment.environment && experiment.demonstrations) check_environment_type(experiment);
   if (experiment.context_extractor) check_extractor_segments(experiment);
+  if (experiment.context_extractor && experiment.demonstrations) check_images(experiment);
   if (experiment.policy) check_policy_contexts(experiment);
   if (experiment.environment && experiment.demonstrations && experiment.policy) {
     check_expert(experiment);

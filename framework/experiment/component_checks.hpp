@@ -6,6 +6,8 @@
 // - every segment the policy conditions on a context gets one, from the
 //   context extractor or from the demonstrations themselves;
 // - every segment the extractor gives a context for exists;
+// - an expert demonstrates in the environment it was made for;
+// - an extractor that reads images gets demonstrations that record them;
 // - an evaluation in an environment has an expert that can demonstrate.
 #pragma once
 

@@ -140,6 +140,7 @@ void run_stages(Experiment& experiment, const fs::path& dir, const RunOptions& o
   const bool write = experiment.config.output.write_predictions;
   if (experiment.environment) {
     Rng evaluation_rng(mix64(experiment.config.evaluation.seed ^ fnv1a64("evaluation")));
+    if (experiment.context_extractor) experiment.context_extractor->start_evaluation();
     EnvironmentEvaluation evaluation = evaluate_in_environment(
         *experiment.environment, *experiment.demonstrations, experiment.context_extractor.get(),
         *experiment.policy, experiment.config.evaluation.trials, evaluation_rng,

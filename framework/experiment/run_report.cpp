@@ -31,6 +31,7 @@ std::string percent_text(const double* rate) {
 }
 
 // A trajectory error the runs recorded: <segment>_mp_error_mean_<unit>.
+const std::string kErrorMarker = "_mp_error_mean_";
 struct ErrorColumn {
   std::string segment, unit;
   std::string mean() const { return segment + "_mp_error_mean_" + unit; }
@@ -41,13 +42,12 @@ struct ErrorColumn {
 // Every error the runs recorded, in the order the first run recording it did
 // (the task's order of segments).
 std::vector<ErrorColumn> error_columns(const std::vector<RunSummary>& runs) {
-  static const std::string kMarker = "_mp_error_mean_";
   std::vector<ErrorColumn> columns;
   for (const auto& run : runs) {
     for (const auto& name : run.metric_order) {
-      const auto at = name.find(kMarker);
+      const auto at = name.find(kErrorMarker);
       if (at == std::string::npos || at == 0) continue;
-      ErrorColumn column{name.substr(0, at), name.substr(at + kMarker.size())};
+      ErrorColumn column{name.substr(0, at), name.substr(at + kErrorMarker.size())};
       const bool known = std::any_of(columns.begin(), columns.end(), [&](const ErrorColumn& c) {
         return c.mean() == column.mean();
       });
@@ -136,8 +136,8 @@ std::string report_markdown(const std::vector<RunSummary>& runs, const ReportFor
     for (const auto& [mean, text] : row.errors) {
       const bool known = std::any_of(errors.begin(), errors.end(),
                                      [&](const ErrorColumn& c) { return c.mean() == mean; });
-      const auto at = mean.find("_mp_error_mean_");
-      if (!known) errors.push_back({mean.substr(0, at), mean.substr(at + 15)});
+      const auto at = mean.find(kErrorMarker);
+      if (!known) errors.push_back({mean.substr(0, at), mean.substr(at + kErrorMarker.size())});
     }
   }
   std::string out = "| run | experiment | varies | task success | decision match |";

@@ -1,7 +1,7 @@
 // The baseline of the paper's Section IV-B: one CNMP for the whole trajectory
-// (the demonstrations' "full" segment), given the corridor location as its
-// context and executed open loop, with a width chosen so that its parameter
-// count matches the sum of the segment networks it replaces.
+// (the demonstrations' "full" segment), given the context seen at the start
+// (the paper gives it the corridor location) and executed open loop, with a width chosen so that
+// its parameter count matches the sum of the segment networks it replaces.
 #pragma once
 
 #include <memory>

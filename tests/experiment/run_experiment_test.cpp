@@ -122,6 +122,15 @@ TEST(RunExperiment, MismatchedComponentsAreConfigErrors) {
        "context.gripper_state: expected a list of 3 items, got 1"},
       {std::string(PROJECT_DIR) + "/configs/rope_color.yaml environment.rope.nodes=1",
        "environment.rope.nodes"},
+      {dir.write("wrong_expert.yaml",
+                 "experiment: {name: a}\nenvironment: {type: corridor_push}\n"
+                 "demonstrations: {type: rope_expert}\npolicy:\n  type: segmented_cnmp\n"
+                 "  segments: [{name: pre, use_context: false}]\n"),
+       "wrong_expert.yaml:3:24: demonstrations.type: 'rope_expert' demonstrates in a 'rope_knot' "
+       "environment, not in 'corridor_push'"},
+      {std::string(PROJECT_DIR) + "/configs/rope_color.yaml demonstrations.images=false",
+       "demonstrations.images: the context extractor 'color_segmentation' reads camera images, "
+       "but the demonstrations of 'rope_expert' record none: set images: true"},
       {corridor + " 'environment.gripper.palm_size=[]'",
        "environment.gripper.palm_size: expected a list of 3 items, got 0"},
       {std::string(PROJECT_DIR) + "/configs/corridor_ae.yaml 'environment.camera.eye=[1, 2]'",
@@ -338,7 +347,8 @@ TEST(RunExperiment, ATinyRopeRunRecordsKnotOutcomesAndContexts) {
       2);
   for (const char* name :
        {"task_success_rate", "knot_rate", "enclosed_rate", "context_error_median_mm",
-        "context_found_rate", "cor_mp_error_mean_cm", "failures_missed_enclose"}) {
+        "context_found_rate", "demonstrations_context_found_rate", "cor_mp_error_mean_cm",
+        "failures_missed_enclose"}) {
     EXPECT_FALSE(store
                      .query_text("SELECT value FROM metrics WHERE run_id = 1 AND name = '" +
                                  std::string(name) + "'")

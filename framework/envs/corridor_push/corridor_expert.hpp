@@ -53,6 +53,8 @@ class CorridorExpert : public DemonstrationSource {
   DemonstrationSplit collect(Environment* environment, Rng& rng) override;
   std::vector<std::string> segments() const override { return {"pre", "cor", "post", "full"}; }
   bool needs_environment() const override { return true; }
+  std::string environment_type() const override { return "corridor_push"; }
+  bool records_images() const override { return params_.images; }
   bool can_demonstrate() const override { return true; }
   // 5: the first per-source version (the pipeline's global key was at v4).
   std::string version() const override { return "5"; }

@@ -48,6 +48,8 @@ class RopeExpert : public DemonstrationSource {
   DemonstrationSplit collect(Environment* environment, Rng& rng) override;
   std::vector<std::string> segments() const override { return {"pre", "cor", "post", "full"}; }
   bool needs_environment() const override { return true; }
+  std::string environment_type() const override { return "rope_knot"; }
+  bool records_images() const override { return params_.images; }
   bool can_demonstrate() const override { return true; }
   Demonstration demonstrate(Environment& environment, const Scenario& scenario,
                             bool with_images) override;
