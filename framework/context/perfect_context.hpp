@@ -1,6 +1,6 @@
 // Context extractor `perfect` (paper, Section IV-B "perfect context"): named
-// state values read straight from the simulator, e.g. cor-MP gets the
-// corridor's x position and post-MP the object's x position.
+// state values read straight from the simulator, e.g. in the corridor task
+// cor-MP gets the corridor's x position and post-MP the object's x position.
 #pragma once
 
 #include <string>
@@ -23,12 +23,13 @@ struct SegmentContextSpec {
 };
 
 struct PerfectContextParams {
-  std::vector<SegmentContextSpec> segments{
-      {"cor", {"corridor_x"}}, {"post", {"object_x"}}, {"full", {"corridor_x"}}};
+  std::vector<SegmentContextSpec> segments;
 
   template <class Fields>
   void describe(Fields& f) {
-    f("segments", segments, "which state values form each segment's context");
+    f("segments", segments,
+      "which state values form each segment's context, e.g. [{segment: cor, state: [x]}]",
+      required());
   }
 };
 

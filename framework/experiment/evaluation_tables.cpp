@@ -55,6 +55,13 @@ int count_failures(const std::vector<EvaluatedTrial>& trials, const std::string&
   }));
 }
 
+// The width of a table's first column: its longest name, at least `minimum`.
+size_t column_width(const std::vector<std::string>& names, size_t minimum) {
+  size_t width = minimum;
+  for (const auto& name : names) width = std::max(width, name.size());
+  return width;
+}
+
 std::string percent(int part, int whole) {
   return whole > 0 ? fmt::format("{:.0f}%", 100.0 * part / whole) : "-";
 }
@@ -110,7 +117,8 @@ std::string evaluation_tables(const TaskReport& task, bool decided,
   if (!task.decision_labels.empty()) {
     t += fmt::format("Table I ({}): {} of {} trials succeeded, decision match {}\n", label,
                      successes, count, decided ? percent(count_matches(trials), count) : "-");
-    t += fmt::format("  {:<14} {:<34} {:>15} {:>13}\n", "expected", "action choice",
+    const size_t w = column_width(task.decision_labels, 14);
+    t += fmt::format("  {:<{}} {:<34} {:>15} {:>13}\n", "expected", w, "action choice",
                      "decision match", "task success");
     const auto decisions = count_decisions(trials);
     for (const auto& name : task.decision_labels) {
@@ -120,7 +128,7 @@ std::string evaluation_tables(const TaskReport& task, bool decided,
       for (const auto& [action, n] : it->second.chosen) {
         chosen += fmt::format("{}{} {}", chosen.empty() ? "" : ", ", n, action);
       }
-      t += fmt::format("  {:<14} {:<34} {:>15} {:>13}\n", name, decided ? chosen : "-",
+      t += fmt::format("  {:<{}} {:<34} {:>15} {:>13}\n", name, w, decided ? chosen : "-",
                        decided ? percent(it->second.matched, it->second.expected) : "-",
                        percent(it->second.succeeded, it->second.expected));
     }
@@ -140,13 +148,15 @@ std::string evaluation_tables(const TaskReport& task, bool decided,
   if (!task.outcome_metrics.empty()) {
     t += fmt::format("Outcomes ({}):\n", label);
     for (const auto& name : task.outcome_metrics) {
-      t += fmt::format("  {:<24} {:>6.0f}%\n", name, 100.0 * outcome_mean(trials, name));
+      t += fmt::format("  {:<{}} {:>6.0f}%\n", name, column_width(task.outcome_metrics, 24),
+                       100.0 * outcome_mean(trials, name));
     }
   }
   if (!task.failure_categories.empty() && successes < count) {
     t += fmt::format("Failures ({}):\n", label);
     for (const auto& category : task.failure_categories) {
-      t += fmt::format("  {:<24} {:>3}\n", category, count_failures(trials, category));
+      t += fmt::format("  {:<{}} {:>3}\n", category, column_width(task.failure_categories, 24),
+                       count_failures(trials, category));
     }
   }
   return t;
