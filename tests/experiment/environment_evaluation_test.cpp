@@ -1,6 +1,8 @@
 // Tests of the closed-loop evaluation: a whole-skill policy that replays the
 // expert's own recording succeeds, makes the expert's decisions, and its
-// segments (cut at the reference's critical points) match the expert's.
+// segments (cut at the reference's critical points) match the expert's; on a
+// made-up task, a relative segment starts from zero offsets and is executed
+// from where the effector is, and a trial that throws is a failed trial.
 #include "experiment/environment_evaluation.hpp"
 
 #include <gtest/gtest.h>
@@ -101,6 +103,134 @@ TEST(EnvironmentEvaluation, AWholeSkillPolicyIsCutAtTheReferencesCriticalPoints)
   }
   EXPECT_NE(result.tables.find("Table I (replay): 4 of 4 trials succeeded"), std::string::npos)
       << result.tables;
+}
+
+// A made-up task on a line: the effector starts at 1; segment "move" is
+// absolute, segment "nudge" relative in column 0 only (column 1 is a
+// gripper-like flag). Success: the effector ends beyond 3.
+class LineTask : public Environment {
+ public:
+  TaskReport report() const override {
+    TaskReport task;
+    task.trajectory_columns = {"position", "flag"};
+    task.error_segments = {"move", "nudge"};
+    task.error_scale = 1.0;
+    task.error_unit = "m";
+    task.relative_columns = {0};
+    task.decision_segment = "nudge";
+    task.decision_labels = {"forward", "back"};
+    task.plot_horizontal = 1;
+    task.plot_vertical = 0;
+    return task;
+  }
+  Scenario sample_scenario(Rng& rng) const override { return {{"throw", rng.uniform()}}; }
+  void reset(const Scenario& scenario) override {
+    position_ = 1.0;
+    if (scenario.at("throw") < throw_below_) throw std::runtime_error("cannot reset");
+  }
+  std::vector<SegmentInfo> segments() const override { return {{"move", 3}, {"nudge", 3, true}}; }
+  Eigen::RowVectorXd effector_position() const override {
+    Eigen::RowVectorXd row(2);
+    row << position_, 7.0;
+    return row;
+  }
+  std::string execute(const std::string& segment, const Eigen::MatrixXd& rows) override {
+    executed_.push_back(rows);
+    position_ =
+        segment == "nudge" ? position_ + rows(rows.rows() - 1, 0) : rows(rows.rows() - 1, 0);
+    return "";
+  }
+  Observation observe(bool) override { return {}; }
+  Outcome outcome() const override {
+    return {position_ > 3.0, position_ > 3.0 ? "" : "short", {}, {}};
+  }
+  std::string classify_decision(const Eigen::MatrixXd& rows) const override {
+    return rows(rows.rows() - 1, 0) > rows(0, 0) ? "forward" : "back";
+  }
+
+  double throw_below_ = -1.0;
+  double position_ = 1.0;
+  std::vector<Eigen::MatrixXd> executed_;
+};
+
+// The expert: to 2 (absolute), then 1.5 further (relative).
+class LineExpert : public DemonstrationSource {
+ public:
+  DemonstrationSplit collect(Environment*, Rng&) override { return {}; }
+  bool can_demonstrate() const override { return true; }
+  Demonstration demonstrate(Environment&, const Scenario&, bool) override {
+    Demonstration demo;
+    demo.decision = "forward";
+    Eigen::MatrixXd move(3, 2), nudge(3, 2);
+    move << 1, 7, 1.5, 7, 2, 7;
+    nudge << 0, 7, 0.75, 7, 1.5, 7;
+    demo.segments.push_back({"move", Eigen::VectorXd::LinSpaced(3, 0, 1), move, {}, {}});
+    demo.segments.push_back({"nudge", Eigen::VectorXd::LinSpaced(3, 0, 1), nudge, {}, {}});
+    return demo;
+  }
+};
+
+// The policy: goes to 2.5, then 1.0 further; it records the start rows it was given.
+class LinePolicy : public Policy {
+ public:
+  std::vector<PolicyTrainingSummary> fit(const std::vector<Demonstration>&,
+                                         const std::vector<Demonstration>&, Rng&) override {
+    return {};
+  }
+  std::vector<std::string> segments() const override { return {"move", "nudge"}; }
+  std::vector<std::string> context_segments() const override { return {}; }
+  CnmpPrediction generate(const std::string& segment, const Eigen::MatrixXd& observations,
+                          const Eigen::VectorXd&, const Eigen::MatrixXd& query_x) override {
+    starts[segment] = observations;
+    const double from = observations(0, 1), to = segment == "move" ? 2.5 : 1.0;
+    Eigen::MatrixXd mean(query_x.rows(), 2);
+    mean.col(0) = Eigen::VectorXd::LinSpaced(query_x.rows(), from, to);
+    mean.col(1).setConstant(7.0);
+    return {mean, Eigen::MatrixXd::Zero(mean.rows(), 2)};
+  }
+  void save(const std::string&) override {}
+
+  std::map<std::string, Eigen::MatrixXd> starts;
+};
+
+TEST(EnvironmentEvaluation, ARelativeSegmentStartsAtZeroAndRunsFromTheEffector) {
+  LineTask task;
+  LineExpert expert;
+  LinePolicy policy;
+  Rng rng(3);
+  const EnvironmentEvaluation result =
+      evaluate_in_environment(task, expert, nullptr, policy, 1, rng, "line");
+  // The relative segment was conditioned on zero offset in column 0, the flag as it is.
+  EXPECT_EQ(policy.starts.at("nudge")(0, 1), 0.0);
+  EXPECT_EQ(policy.starts.at("nudge")(0, 2), 7.0);
+  EXPECT_EQ(policy.starts.at("move")(0, 1), 1.0);
+  // It moved 1.0 on from 2.5: the effector ends at 3.5, a success.
+  ASSERT_EQ(result.evaluated.size(), 1u);
+  const EvaluatedTrial& trial = result.evaluated[0];
+  EXPECT_TRUE(trial.success) << trial.failure;
+  EXPECT_EQ(trial.chosen_action, "forward");
+  EXPECT_EQ(trial.origins.at("nudge")(0), 2.5);
+  // Errors in the segments' own frames: each ends 0.5 off, linearly from 0.
+  std::map<std::string, double> metrics;
+  for (const auto& m : result.metrics) metrics[m.name] = m.value;
+  EXPECT_NEAR(metrics.at("move_mp_error_max_m"), (0 + 0.25 + 0.5) / 3, 1e-12);
+  EXPECT_NEAR(metrics.at("nudge_mp_error_max_m"), (0 + 0.25 + 0.5) / 3, 1e-12);
+  EXPECT_EQ(metrics.at("decision_match_rate"), 1.0);
+}
+
+TEST(EnvironmentEvaluation, ATrialThatThrowsIsAFailedTrialWithItsReason) {
+  LineTask task;
+  task.throw_below_ = 2.0;  // every reset throws
+  LineExpert expert;
+  LinePolicy policy;
+  Rng rng(3);
+  const EnvironmentEvaluation result =
+      evaluate_in_environment(task, expert, nullptr, policy, 2, rng, "line");
+  ASSERT_EQ(result.trials.size(), 2u);
+  for (const auto& trial : result.trials) {
+    EXPECT_FALSE(trial.success);
+    EXPECT_EQ(trial.failure, "error: cannot reset");
+  }
 }
 
 }  // namespace
