@@ -53,6 +53,12 @@ ColorSegmentationContext::ColorSegmentationContext(const ColorSegmentationContex
   }
 }
 
+std::vector<std::string> ColorSegmentationContext::state_names() const {
+  std::vector<std::string> names = params_.gripper_state;
+  names.insert(names.end(), params_.truth_state.begin(), params_.truth_state.end());
+  return names;
+}
+
 bool ColorSegmentationContext::wanted(const std::string& segment) const {
   return std::find(params_.segments.begin(), params_.segments.end(), segment) !=
          params_.segments.end();

@@ -33,6 +33,9 @@ class ContextExtractor {
   virtual Eigen::VectorXd extract(const std::string& segment, const Observation& observation) = 0;
   // The segments it gives a context for.
   virtual std::vector<std::string> segments() const = 0;
+  // The observation state values it reads (checked at load against what the
+  // environment observes).
+  virtual std::vector<std::string> state_names() const { return {}; }
   // Whether observations must include camera images.
   virtual bool needs_images() const = 0;
   // Writes what a researcher looks at (figures, models) into the run directory.

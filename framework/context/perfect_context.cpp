@@ -9,6 +9,13 @@ std::vector<std::string> PerfectContext::segments() const {
   return names;
 }
 
+std::vector<std::string> PerfectContext::state_names() const {
+  std::vector<std::string> names;
+  for (const auto& spec : params_.segments)
+    names.insert(names.end(), spec.state.begin(), spec.state.end());
+  return names;
+}
+
 Eigen::VectorXd PerfectContext::extract(const std::string& segment,
                                         const Observation& observation) {
   for (const auto& spec : params_.segments) {

@@ -39,6 +39,7 @@ class PerfectContext : public ContextExtractor {
   void fit(const std::vector<Demonstration>&, const ExtractorCache&, Rng&) override {}
   Eigen::VectorXd extract(const std::string& segment, const Observation& observation) override;
   std::vector<std::string> segments() const override;
+  std::vector<std::string> state_names() const override;
   bool needs_images() const override { return false; }
 
  private:

@@ -111,6 +111,9 @@ class Environment {
   // execution stopped (a physics blow-up, an invalid point).
   virtual std::string execute(const std::string& segment, const Eigen::MatrixXd& trajectory) = 0;
   virtual Observation observe(bool with_image) = 0;
+  // The names of the state values every observation holds (checked at load
+  // against what the context extractor reads).
+  virtual std::vector<std::string> state_names() const = 0;
   virtual Outcome outcome() const = 0;
 
   // The decision a trajectory of TaskReport::decision_segment performs (one

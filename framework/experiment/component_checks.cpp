@@ -126,6 +126,17 @@ void check_images(const Experiment& e) {
                   e.config.demonstrations->node->find("images") ? ": set images: true" : ""));
 }
 
+void check_state_names(const Experiment& e) {
+  const std::vector<std::string> observed = e.environment->state_names();
+  for (const auto& name : e.context_extractor->state_names()) {
+    if (contains(observed, name)) continue;
+    const Located at = locate(*e.config.context, name);
+    throw ConfigError(at.where, at.path,
+                      fmt::format("'{}' is not a state value of '{}' (it observes: {})", name,
+                                  e.config.environment->type, listed(observed)));
+  }
+}
+
 void check_expert(const Experiment& e) {
   if (e.demonstrations->can_demonstrate()) return;
   const ConfigNode* type = e.config.demonstrations->node->find("type");
@@ -142,6 +153,7 @@ void check_components(const Experiment& experiment) {
   if (experiment.environment && experiment.demonstrations) check_environment_type(experiment);
   if (experiment.context_extractor) check_extractor_segments(experiment);
   if (experiment.context_extractor && experiment.demonstrations) check_images(experiment);
+  if (experiment.context_extractor && experiment.environment) check_state_names(experiment);
   if (experiment.policy) check_policy_contexts(experiment);
   if (experiment.environment && experiment.demonstrations && experiment.policy) {
     check_expert(experiment);

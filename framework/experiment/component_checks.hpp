@@ -8,6 +8,7 @@
 // - every segment the extractor gives a context for exists;
 // - an expert demonstrates in the environment it was made for;
 // - an extractor that reads images gets demonstrations that record them;
+// - the state values an extractor reads are ones the environment observes;
 // - an evaluation in an environment has an expert that can demonstrate.
 #pragma once
 

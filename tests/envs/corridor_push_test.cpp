@@ -55,6 +55,13 @@ TEST(CorridorPush, TheExpertSucceedsOnAtLeast98PercentOfScenariosWithTheRightDec
   EXPECT_GT(decisions["none"], 2);
 }
 
+TEST(CorridorPush, DeclaresTheStateValuesItObserves) {
+  CorridorPush env{CorridorPushParams{}};
+  std::vector<std::string> keys;
+  for (const auto& [key, value] : env.observe(false).state) keys.push_back(key);
+  EXPECT_EQ(keys, env.state_names());  // both sorted
+}
+
 TEST(CorridorPush, TouchingTheCorridorFailsTheTrial) {
   CorridorPush env{CorridorPushParams{}};
   const Scenario scenario{{"corridor_offset", 0.025}, {"object_dx", 0.0}, {"object_dy", 0.0}};

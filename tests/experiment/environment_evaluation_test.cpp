@@ -141,6 +141,7 @@ class LineTask : public Environment {
     return "";
   }
   Observation observe(bool) override { return {}; }
+  std::vector<std::string> state_names() const override { return {}; }
   Outcome outcome() const override {
     return {position_ > 3.0, position_ > 3.0 ? "" : "short", {}, {}};
   }

@@ -131,6 +131,10 @@ TEST(RunExperiment, MismatchedComponentsAreConfigErrors) {
       {std::string(PROJECT_DIR) + "/configs/rope_color.yaml demonstrations.images=false",
        "demonstrations.images: the context extractor 'color_segmentation' reads camera images, "
        "but the demonstrations of 'rope_expert' record none: set images: true"},
+      {corridor + " 'context.segments=[{segment: cor, state: [corridor_z]}, {segment: post, "
+                  "state: [object_x]}]'",
+       "context.segments[0].state[0]: 'corridor_z' is not a state value of 'corridor_push' "
+       "(it observes: corridor_x, corridor_y, gripper_x"},
       {corridor + " 'environment.gripper.palm_size=[]'",
        "environment.gripper.palm_size: expected a list of 3 items, got 0"},
       {std::string(PROJECT_DIR) + "/configs/corridor_ae.yaml 'environment.camera.eye=[1, 2]'",

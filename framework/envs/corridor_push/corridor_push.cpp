@@ -108,6 +108,11 @@ std::string CorridorPush::execute(const std::string&, const Eigen::MatrixXd& tra
   return failure_;
 }
 
+std::vector<std::string> CorridorPush::state_names() const {
+  return {"corridor_x", "corridor_y", "gripper_x", "gripper_y",
+          "gripper_z",  "object_x",   "object_y"};
+}
+
 Observation CorridorPush::observe(bool with_image) {
   Observation observation;
   const Eigen::Vector3d tool = gripper_->position();

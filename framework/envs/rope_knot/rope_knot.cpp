@@ -109,6 +109,12 @@ std::string RopeKnot::execute(const std::string& segment, const Eigen::MatrixXd&
   return fault_;
 }
 
+std::vector<std::string> RopeKnot::state_names() const {
+  return {"gripper_mid_x", "gripper_mid_y", "gripper_mid_z", "right_x",
+          "right_y",       "right_z",       "rope_end_dx",   "rope_end_dy",
+          "rope_end_dz",   "rope_end_x",    "rope_end_y",    "rope_end_z"};
+}
+
 Observation RopeKnot::observe(bool with_image) {
   Observation observation;
   // The gripper mid-point where it is (the head camera sees the gripper as

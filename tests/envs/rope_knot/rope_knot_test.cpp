@@ -80,6 +80,11 @@ TEST(RopeKnot, ObservationsCarryTheCameraModelAndTheTrueOffset) {
   const Eigen::Vector3d offset(seen.value("rope_end_dx"), seen.value("rope_end_dy"),
                                seen.value("rope_end_dz"));
   EXPECT_LT((end - gripper - offset).norm(), 1e-12);
+  std::vector<std::string> keys;
+  for (const auto& [key, value] : seen.state) keys.push_back(key);
+  std::vector<std::string> declared = env.state_names();
+  std::sort(declared.begin(), declared.end());
+  EXPECT_EQ(keys, declared);
   EXPECT_FALSE(env.observe(false).camera.has_value());
 }
 
