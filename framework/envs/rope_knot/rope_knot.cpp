@@ -14,11 +14,12 @@ namespace {
 constexpr const char* kPhysicsFault = "physics fault";
 constexpr const char* kInvalidTrajectory = "invalid trajectory";
 
-// The grippers as the robot commands them. The left hand's drift is a
-// hardware error the rows do not know of; it shows in where the gripper is.
+// The grippers as the robot commands them. The left hand's drift and the
+// right hand's tracking noise are hardware errors the rows do not know of;
+// they show in where the grippers are.
 Eigen::RowVectorXd row_of(const RopeKnotScene& scene) {
   Eigen::RowVectorXd row(8);
-  const Eigen::Vector3d left = scene.left_command(), right = scene.right_position();
+  const Eigen::Vector3d left = scene.left_command(), right = scene.right_command();
   row << left.x(), left.y(), left.z(), scene.left_closed() ? 1.0 : 0.0, right.x(), right.y(),
       right.z(), scene.right_closed() ? 1.0 : 0.0;
   return row;

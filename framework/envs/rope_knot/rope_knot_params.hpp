@@ -6,8 +6,9 @@
 // loop, and presents the free end; the left gripper encloses the free end (the
 // critical point), pulls it through and tightens. Perturbations: where the
 // right gripper holds the rope (free tail length), the rope length between the
-// weight and the right gripper, and the left hand's drift (an offset the
-// hardware adds to its executed path).
+// weight and the right gripper, the left hand's drift (an offset the hardware
+// adds to its executed path) and the right hand's waypoint noise (a small,
+// smoothly varying error with which the hardware tracks its rows).
 #pragma once
 
 #include <vector>
@@ -81,6 +82,8 @@ struct RopeKnotParams {
   double grasp_range = 0.04;
   double span_range = 0.04;
   std::vector<double> drift_range{0.035, 0.04, 0.03};
+  double waypoint_noise = 0.01;
+  double waypoint_noise_period = 1.5;
   double settle_time = 0.4;
   double min_winding = 0.75;
   int pre_points = 120;
@@ -112,6 +115,13 @@ struct RopeKnotParams {
       at_least(0.0));
     f("drift_range", drift_range, "uniform +- range of the left hand's drift in x, y, z (m)",
       size_is(3).at_least(0.0));
+    f("waypoint_noise", waypoint_noise,
+      "uniform +- amplitude per axis of the right hand's tracking error in scenarios with a "
+      "noise_seed (m)",
+      at_least(0.0));
+    f("waypoint_noise_period", waypoint_noise_period,
+      "time between the knots the right hand's tracking error is interpolated between (s)",
+      positive());
     f("settle_time", settle_time, "time the rope settles after a reset (s)", at_least(0.0));
     f("min_winding", min_winding, "turns about the bar a knot must make", at_least(0.0));
     f("pre_points", pre_points, "rows of the pre-MP segment", at_least(2));

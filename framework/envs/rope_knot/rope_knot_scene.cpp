@@ -22,9 +22,22 @@ Eigen::Vector3d vec3(const std::vector<double>& v, const char* what) {
   return Eigen::Vector3d(v[0], v[1], v[2]);
 }
 
+// Simulated time after a reset the right hand's noise knots cover; it holds
+// its last value after that (s).
+constexpr double kNoiseHorizon = 60.0;
+
 double value_or_zero(const Scenario& scenario, const std::string& key) {
   const auto it = scenario.find(key);
   return it == scenario.end() ? 0.0 : it->second;
+}
+
+// The seed of the right hand's waypoint noise: a whole number in [0, 2^53].
+uint64_t noise_seed(double value) {
+  if (!(value >= 0.0 && value <= 9007199254740992.0 && std::floor(value) == value)) {
+    throw std::invalid_argument(fmt::format(
+        "RopeKnotScene::reset: noise_seed {} is not a whole number in [0, 2^53]", value));
+  }
+  return static_cast<uint64_t>(value);
 }
 
 // The rope nodes of the weight's start and of the right gripper's grasp for a
@@ -105,6 +118,11 @@ RopeKnotScene::RopeKnotScene(const RopeKnotParams& params) : params_(params) {
   check_points(m.right_loop, "right_loop");
   check_points(m.right_tuck, "right_tuck");
   check_scenarios_fit(params);
+  if (!(params.waypoint_noise_period > 0.0) || kNoiseHorizon / params.waypoint_noise_period > 1e6) {
+    throw std::invalid_argument(fmt::format(
+        "RopeKnotScene: waypoint_noise_period {} needs to be positive and at least {} s",
+        params.waypoint_noise_period, kNoiseHorizon / 1e6));
+  }
   reset({});
 }
 
@@ -119,6 +137,8 @@ Scenario RopeKnotScene::sample(Rng& rng) const {
   s["drift_x"] = rng.uniform(-params_.drift_range[0], params_.drift_range[0]);
   s["drift_y"] = rng.uniform(-params_.drift_range[1], params_.drift_range[1]);
   s["drift_z"] = rng.uniform(-params_.drift_range[2], params_.drift_range[2]);
+  // Drawn last: the other keys stay those of a given rng stream.
+  s["noise_seed"] = static_cast<double>(rng.uniform_int(0, (int64_t{1} << 31) - 1));
   return s;
 }
 
@@ -144,6 +164,23 @@ void RopeKnotScene::reset(const Scenario& scenario) {
   }
   drift_ = Eigen::Vector3d(value_or_zero(scenario, "drift_x"), value_or_zero(scenario, "drift_y"),
                            value_or_zero(scenario, "drift_z"));
+  noise_knots_.clear();
+  right_noise_.setZero();
+  const auto seed = scenario.find("noise_seed");
+  if (seed != scenario.end() && params_.waypoint_noise > 0.0) {
+    Rng rng(mix64(noise_seed(seed->second)));
+    const double a = params_.waypoint_noise;
+    const int knots =
+        static_cast<int>(std::ceil(kNoiseHorizon / params_.waypoint_noise_period)) + 1;
+    for (int k = 0; k < knots; ++k) {
+      const double x = rng.uniform(-a, a);
+      const double y = rng.uniform(-a, a);
+      const double z = rng.uniform(-a, a);
+      noise_knots_.emplace_back(x, y, z);
+    }
+  } else if (seed != scenario.end()) {
+    noise_seed(seed->second);
+  }
 
   // Both parts hang from the right gripper: the tail straight down, the
   // standing part down and towards -y.
@@ -203,6 +240,15 @@ std::string RopeKnotScene::set_grips(bool left_closed, bool right_closed) {
   return fault_;
 }
 
+Eigen::Vector3d RopeKnotScene::noise_at(double time) const {
+  if (noise_knots_.empty()) return Eigen::Vector3d::Zero();
+  const double s = std::max(0.0, time / params_.waypoint_noise_period);
+  const size_t k = static_cast<size_t>(std::floor(s));
+  if (k + 1 >= noise_knots_.size()) return noise_knots_.back();
+  const double a = s - static_cast<double>(k);
+  return (1.0 - a) * noise_knots_[k] + a * noise_knots_[k + 1];
+}
+
 std::string RopeKnotScene::execute(const Eigen::MatrixXd& rows) {
   if (rows.cols() != 8) {
     throw std::invalid_argument(
@@ -212,7 +258,11 @@ std::string RopeKnotScene::execute(const Eigen::MatrixXd& rows) {
   const double reach = params_.gripper.max_speed * world_->time_step();
   for (Eigen::Index k = 0; k < rows.rows() && fault_.empty(); ++k) {
     const Eigen::Vector3d left_target = rows.row(k).segment<3>(0).transpose() + left_drift();
-    const Eigen::Vector3d right_target = rows.row(k).segment<3>(4).transpose();
+    Eigen::Vector3d right_target = rows.row(k).segment<3>(4).transpose();
+    if (!noise_knots_.empty()) {
+      right_noise_ = noise_at(world_->time());
+      right_target += right_noise_;
+    }
     while (fault_.empty()) {
       const Eigen::Vector3d dl = left_target - left_->position();
       const Eigen::Vector3d dr = right_target - right_->position();
@@ -233,6 +283,7 @@ Eigen::Vector3d RopeKnotScene::left_drift() const {
 
 Eigen::Vector3d RopeKnotScene::left_command() const { return left_->position() - left_drift(); }
 Eigen::Vector3d RopeKnotScene::right_position() const { return right_->position(); }
+Eigen::Vector3d RopeKnotScene::right_command() const { return right_->position() - right_noise_; }
 bool RopeKnotScene::left_closed() const { return left_->closed(); }
 bool RopeKnotScene::right_closed() const { return right_->closed(); }
 std::vector<Eigen::Vector3d> RopeKnotScene::rope_nodes() const { return rope_->nodes(); }

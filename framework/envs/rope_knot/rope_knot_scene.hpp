@@ -4,7 +4,10 @@
 // Ry, Rz, Rgrip] (metres; grip 1 closed, 0 open, thresholded at 0.5) at
 // bounded speed, scenario sampling and the knot outcome. The left gripper is
 // the enclosing one; its hand drift is added to the rows it executes after it
-// has let go of the standing part (its reach for the free end).
+// has let go of the standing part (its reach for the free end). The right
+// (looping) hand tracks its rows with waypoint noise: an offset interpolated
+// linearly between random knots in time, the "invisible" variation of the
+// paper's demonstrations.
 #pragma once
 
 #include <Eigen/Core>
@@ -38,9 +41,13 @@ class RopeKnotScene {
 
   // Keys: grasp_offset (m along the rope towards its end), span_offset (m more
   // rope between the weight and the right gripper), drift_x, drift_y, drift_z
-  // (m, the left hand's drift, see left_drift()). Missing keys are 0. Builds the world, lets the
+  // (m, the left hand's drift, see left_drift()), noise_seed (a whole number in
+  // [0, 2^53]: the seed of the right hand's waypoint noise, see right_noise();
+  // missing: no noise). Other missing keys are 0. Builds the world, lets the
   // rope settle.
   void reset(const Scenario& scenario);
+  // Draws grasp_offset, span_offset, drift_x, drift_y, drift_z and then
+  // noise_seed (uniform in [0, 2^31)), in that order.
   Scenario sample(Rng& rng) const;
 
   // Follows the rows; "" or the physics fault that stopped it.
@@ -53,6 +60,13 @@ class RopeKnotScene {
   // go of the standing part (it reaches for the free end), zero before.
   Eigen::Vector3d left_drift() const;
   Eigen::Vector3d right_position() const;
+  // Where the rows put the right gripper: its position without the noise.
+  Eigen::Vector3d right_command() const;
+  // The right hand's waypoint noise on the row it tracks (or last tracked):
+  // with a noise_seed, each axis interpolated linearly in the simulated time
+  // since reset at the row's start between knots drawn uniformly in
+  // +-waypoint_noise every waypoint_noise_period; zero without one.
+  Eigen::Vector3d right_noise() const { return right_noise_; }
   bool left_closed() const;
   bool right_closed() const;
   std::vector<Eigen::Vector3d> rope_nodes() const;
@@ -70,6 +84,7 @@ class RopeKnotScene {
  private:
   void tick(const Eigen::Vector3d& left, const Eigen::Vector3d& right);
   std::string set_grips(bool left_closed, bool right_closed);
+  Eigen::Vector3d noise_at(double time) const;
 
   RopeKnotParams params_;
   std::unique_ptr<SoftWorld> world_;
@@ -77,6 +92,9 @@ class RopeKnotScene {
   std::unique_ptr<AnchorGripper> left_;
   std::unique_ptr<AnchorGripper> right_;
   Eigen::Vector3d drift_ = Eigen::Vector3d::Zero();
+  // The right hand's noise at times 0, waypoint_noise_period, ...; empty: none.
+  std::vector<Eigen::Vector3d> noise_knots_;
+  Eigen::Vector3d right_noise_ = Eigen::Vector3d::Zero();
   // Nodes anchored at the left gripper's last close after it let go of the
   // standing part (-1: no such close yet); the pre-MP grab does not count.
   int enclosed_ = -1;
