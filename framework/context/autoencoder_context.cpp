@@ -136,6 +136,11 @@ void AutoencoderContext::write_outputs(const std::string& directory,
   }
 }
 
+std::vector<std::string> AutoencoderContext::state_names() const {
+  if (params_.plot_state.empty()) return {};
+  return {params_.plot_state};
+}
+
 std::vector<std::pair<std::string, double>> AutoencoderContext::metrics() const {
   std::vector<std::pair<std::string, double>> out;
   if (train_mse_ >= 0) out.emplace_back("autoencoder_train_mse", train_mse_);

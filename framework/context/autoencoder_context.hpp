@@ -38,6 +38,7 @@ class AutoencoderContext : public ContextExtractor {
   void fit(const std::vector<Demonstration>& demos, const ExtractorCache& cache, Rng& rng) override;
   Eigen::VectorXd extract(const std::string& segment, const Observation& observation) override;
   std::vector<std::string> segments() const override { return params_.segments; }
+  std::vector<std::string> state_names() const override;
   bool needs_images() const override { return true; }
   void write_outputs(const std::string& directory,
                      const std::vector<Demonstration>& demos) override;

@@ -135,6 +135,8 @@ TEST(RunExperiment, MismatchedComponentsAreConfigErrors) {
                   "state: [object_x]}]'",
        "context.segments[0].state[0]: 'corridor_z' is not a state value of 'corridor_push' "
        "(it observes: corridor_x, corridor_y, gripper_x"},
+      {std::string(PROJECT_DIR) + "/configs/corridor_ae.yaml context.plot_state=corridor_q",
+       "context.plot_state: 'corridor_q' is not a state value of 'corridor_push'"},
       {corridor + " 'environment.gripper.palm_size=[]'",
        "environment.gripper.palm_size: expected a list of 3 items, got 0"},
       {std::string(PROJECT_DIR) + "/configs/corridor_ae.yaml 'environment.camera.eye=[1, 2]'",
@@ -148,6 +150,23 @@ TEST(RunExperiment, MismatchedComponentsAreConfigErrors) {
     EXPECT_EQ(std::count(outcome.err.begin(), outcome.err.end(), '\n'), 1) << outcome.err;
     EXPECT_FALSE(std::filesystem::exists(dir.file("r.sqlite"))) << args;
   }
+}
+
+// Every shipped experiment config loads (includes, components, cross-component
+// checks); fragments meant to be included name no experiment and are skipped.
+TEST(RunExperiment, EveryShippedConfigLoads) {
+  TempDir dir;
+  int loaded = 0;
+  for (const auto& entry :
+       std::filesystem::recursive_directory_iterator(std::string(PROJECT_DIR) + "/configs")) {
+    if (entry.path().extension() != ".yaml") continue;
+    if (read_file(entry.path().string()).find("experiment:") == std::string::npos) continue;
+    const Outcome outcome = run(dir, entry.path().string() + " --print-config");
+    EXPECT_EQ(outcome.exit_code, 0) << entry.path() << "\n" << outcome.err;
+    ++loaded;
+  }
+  EXPECT_GE(loaded, 15);
+  EXPECT_FALSE(std::filesystem::exists(dir.file("r.sqlite")));
 }
 
 TEST(RunExperiment, PrintConfigShowsEveryResolvedValue) {
@@ -350,7 +369,7 @@ TEST(RunExperiment, ATinyRopeRunRecordsKnotOutcomesAndContexts) {
                       "AND scenario LIKE '%grasp_offset%' AND (success = 1 OR failure <> '')"),
       2);
   for (const char* name :
-       {"task_success_rate", "knot_rate", "enclosed_rate", "context_error_median_mm",
+       {"task_success_rate", "knot_rate", "enclosed_rate", "demonstrations_context_error_median_mm",
         "context_found_rate", "demonstrations_context_found_rate", "cor_mp_error_mean_cm",
         "failures_missed_enclose"}) {
     EXPECT_FALSE(store
