@@ -1,14 +1,23 @@
-// report [--db PATH] [--experiment NAME ...] [--run ID ...] [--last N] [--csv]
-//        [--metric NAME ...] [--paper] [--all]
+// report [--db PATH] [--experiment NAME ...] [--run ID ...] [--sweep ID ...]
+//        [--last N] [--csv] [--metric NAME ...] [--paper] [--all]
+// report --compare [--by KEY ...] [--baseline GROUP] [--out DIR] ...
+// report --reproduction --sweep ID --out DIR
 // Prints one row per recorded run (task success, decision match, cor-MP and
 // post-MP errors of the paper's Tables I and II) with the settings that vary
-// between runs of the same experiment, as Markdown or CSV.
+// between runs of the same experiment, as Markdown or CSV; with --compare,
+// groups of runs side by side with means and 95% intervals across seeds and
+// Fisher's exact test on their pooled trials (run_comparison.hpp); with
+// --reproduction, the paper's Tables I and II against a sweep's runs
+// (paper_report.hpp).
 #include <CLI/CLI.hpp>
 
 #include <filesystem>
+#include <fstream>
 #include <iostream>
 
 #include "command_line.hpp"
+#include "experiment/paper_report.hpp"
+#include "experiment/run_comparison.hpp"
 #include "experiment/run_report.hpp"
 
 namespace {
@@ -19,7 +28,40 @@ Examples:
   report --experiment corridor_pc corridor_mono --paper
   report --last 5 --metric demonstrations_train
   report --experiment corridor_mono --csv > mono.csv
+  report --compare --experiment corridor_pc corridor_ae corridor_mono --baseline corridor_mono
+  report --compare --sweep SWEEP_ID --by policy.type --out results/compare
+  report --reproduction --sweep SWEEP_ID --out results/reproduction
 )";
+
+// A usage error: one line naming the tool, exit code 2.
+int usage_error(const std::string& message) {
+  std::cerr << "report: " << message << "\n";
+  return 2;
+}
+
+void write_file(const std::filesystem::path& path, const std::string& text) {
+  std::filesystem::create_directories(path.parent_path());
+  std::ofstream file(path);
+  file << text;
+  if (!file) throw std::runtime_error("cannot write '" + path.string() + "'");
+}
+
+// Every --experiment and --run asked for must have a selected run: a group
+// without runs cannot be compared.
+std::string missing_selection(const corrmp::ReportQuery& query,
+                              const std::vector<corrmp::RunSummary>& runs) {
+  for (const auto& experiment : query.experiments) {
+    const bool found = std::any_of(runs.begin(), runs.end(),
+                                   [&](const auto& run) { return run.experiment == experiment; });
+    if (!found) return "experiment '" + experiment + "' has no selected run";
+  }
+  for (int64_t id : query.runs) {
+    const bool found =
+        std::any_of(runs.begin(), runs.end(), [&](const auto& run) { return run.id == id; });
+    if (!found) return "run " + std::to_string(id) + " is not among the selected runs";
+  }
+  return "";
+}
 
 }  // namespace
 
@@ -28,33 +70,99 @@ int main(int argc, char** argv) {
   std::string db_path = "results/results.sqlite";
   corrmp::ReportQuery query;
   corrmp::ReportFormat format;
-  bool csv = false, paper = false, all = false;
+  corrmp::ComparisonOptions comparison;
+  std::string out_dir;
+  bool csv = false, paper = false, all = false, compare = false, reproduction = false;
   app.add_option("--db", db_path, "result database")->capture_default_str();
   app.add_option("--experiment", query.experiments, "only these experiments");
   app.add_option("--run", query.runs, "only these run ids");
+  app.add_option("--sweep", query.sweeps, "only the runs of these sweeps");
   app.add_option("--last", query.last, "only the newest N selected runs")
       ->check(CLI::PositiveNumber);
   app.add_option("--metric", format.extra_metrics, "more metric columns, by name");
   app.add_flag("--csv", csv, "CSV instead of Markdown");
   app.add_flag("--paper", paper, "append the paper's rows (Markdown)");
   app.add_flag("--all", all, "include failed, interrupted and running runs");
+  app.add_flag("--compare", compare,
+               "compare groups of runs: means with 95% intervals across seeds, Fisher's exact "
+               "test on the pooled trials");
+  app.add_option("--by", comparison.group_by,
+                 "with --compare: group by these settings or sweep axes (default: experiment)");
+  app.add_option("--baseline", comparison.baseline,
+                 "with --compare: compare this group with every other (default: every pair)");
+  app.add_flag("--reproduction", reproduction,
+               "write the paper-reproduction report (Tables I and II, rope) to --out");
+  app.add_option("--out", out_dir,
+                 "with --compare: write compare.md and compare.csv here; with --reproduction: "
+                 "report.md and report.csv");
   app.footer(kExamples);
   if (const auto exit_code = corrmp::parse_command_line(app, argc, argv)) return *exit_code;
   query.completed_only = !all;
   if (paper) format.paper_tables = std::string(CORRMP_SOURCE_DIR) + "/assets/paper/tables.yaml";
 
+  if (compare && reproduction)
+    return usage_error("--compare and --reproduction exclude each other");
+  if (!compare && (!comparison.group_by.empty() || !comparison.baseline.empty())) {
+    return usage_error("--by and --baseline need --compare");
+  }
+  if ((compare || reproduction) && paper) {
+    return usage_error("--paper is for the run table; --compare and --reproduction have their own");
+  }
+  if (reproduction && out_dir.empty()) return usage_error("--reproduction needs --out DIR");
+  if (!compare && !reproduction && !out_dir.empty()) {
+    return usage_error("--out needs --compare or --reproduction");
+  }
   if (!std::filesystem::exists(db_path)) {
-    std::cerr << "report: no result database at '" << db_path << "' (see --db)\n";
-    return 2;
+    return usage_error("no result database at '" + db_path + "' (see --db)");
   }
   try {
     corrmp::ResultStore store(db_path);
+    std::optional<corrmp::SweepSummary> sweep;
+    for (const auto& id : query.sweeps) {
+      if (!corrmp::has_sweep_columns(store)) {
+        return usage_error("'" + db_path + "' records no sweeps (see --sweep)");
+      }
+      sweep = corrmp::find_sweep(store, id);
+      if (!sweep) return usage_error("unknown sweep id '" + id + "' in '" + db_path + "'");
+    }
     const auto runs = corrmp::load_run_summaries(store, query);
-    if (runs.empty()) {
+    if (compare || reproduction) {
+      if (const std::string missing = missing_selection(query, runs); !missing.empty()) {
+        return usage_error(missing);
+      }
+      if (runs.empty()) return usage_error("no run in '" + db_path + "' matches");
+    } else if (runs.empty()) {
       std::cerr << "report: no run in '" << db_path << "' matches\n";
       return 1;
     }
-    std::cout << (csv ? corrmp::report_csv(runs, format) : corrmp::report_markdown(runs, format));
+
+    if (compare) {
+      comparison.extra_metrics = format.extra_metrics;
+      const auto result = corrmp::compare_runs(runs, comparison);
+      if (out_dir.empty()) {
+        std::cout << (csv ? corrmp::comparison_csv(result) : corrmp::comparison_markdown(result));
+      } else {
+        write_file(std::filesystem::path(out_dir) / "compare.md",
+                   corrmp::comparison_markdown(result));
+        write_file(std::filesystem::path(out_dir) / "compare.csv", corrmp::comparison_csv(result));
+        std::cout << "report: wrote " << out_dir << "/compare.md and compare.csv\n";
+      }
+    } else if (reproduction) {
+      corrmp::ReproductionInputs inputs;
+      inputs.runs = runs;
+      inputs.paper_tables = std::string(CORRMP_SOURCE_DIR) + "/assets/paper/tables.yaml";
+      if (query.sweeps.size() == 1) inputs.sweep = sweep;
+      // FIGURES: the report's figures go in inputs.figures (path relative to
+      // out_dir, caption); figures_section (paper_report.hpp) lists them.
+      corrmp::write_reproduction_report(corrmp::reproduction_report(inputs), out_dir);
+      std::cout << "report: wrote " << out_dir << "/report.md and report.csv\n";
+    } else {
+      std::cout << (csv ? corrmp::report_csv(runs, format) : corrmp::report_markdown(runs, format));
+    }
+  } catch (const corrmp::ComparisonError& e) {
+    return usage_error(e.what());
+  } catch (const corrmp::ReproductionError& e) {
+    return usage_error(e.what());
   } catch (const std::exception& e) {
     std::cerr << "report: " << e.what() << "\n";
     return 1;

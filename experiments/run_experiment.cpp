@@ -1,5 +1,8 @@
 // run_experiment CONFIG [key.path=value ...] [options]: loads and validates an
 // experiment config, then runs the pipeline and records it in the result store.
+// With -m (or a sweep file) it runs a sweep: every combination of the swept
+// values, -j N at a time, here or on Slurm (docs/sweeps.md); `merge` merges
+// the shard databases of a Slurm sweep.
 // Exit codes: 0 success; 2 usage or config error (nothing written to the
 // database); 1 runtime failure (the run is marked failed with its reason);
 // 130 interrupted. docs/architecture.md, "Command line".
@@ -7,17 +10,25 @@
 #include <spdlog/spdlog.h>
 #include <CLI/CLI.hpp>
 
+#include <filesystem>
 #include <iostream>
+#include <thread>
 
 #include "command_line.hpp"
 
 #include "core/config/config_error.hpp"
 #include "core/interrupt.hpp"
 #include "core/logging.hpp"
+#include "core/thread_budget.hpp"
 #include "experiment/experiment.hpp"
 #include "experiment/pipeline.hpp"
 #include "experiment/registries.hpp"
 #include "store/result_store.hpp"
+#include "store/store_merge.hpp"
+#include "sweep/sweep_definition.hpp"
+#include "sweep/sweep_driver.hpp"
+#include "sweep/sweep_manifest.hpp"
+#include "sweep/sweep_records.hpp"
 
 namespace {
 
@@ -28,7 +39,43 @@ Examples:
   run_experiment configs/curves_demo.yaml --print-config
   run_experiment --list
   run_experiment configs/curves_demo.yaml --db /tmp/sweep.sqlite --out /tmp/runs --quiet
+  run_experiment configs/corridor_pc.yaml -m seed=range(0,5) policy.training.updates=2000,8000 -j 2
+  run_experiment configs/sweeps/paper.yaml -j 2
+  run_experiment --resume corridor_pc-20261123T110000-ab12
+  run_experiment configs/sweeps/paper.yaml --launcher slurm
+  run_experiment configs/sweeps/paper.yaml --emit slurm /shared/sweep
+  run_experiment merge /shared/sweep/shards/*.sqlite --db results/results.sqlite
 )";
+
+int merge_command(const std::vector<std::string>& shards, const std::string& db_path) {
+  corrmp::ResultStore target(db_path);
+  for (const auto& shard : shards) {
+    const corrmp::MergeCounts counts = corrmp::merge_shard(target, shard);
+    fmt::print("{}: {} runs added, {} already in {}{}\n", shard, counts.added, counts.present,
+               db_path,
+               counts.unfinished > 0
+                   ? fmt::format(", {} still running (merge again later)", counts.unfinished)
+                   : "");
+  }
+  return 0;
+}
+
+std::string this_executable() {
+  std::error_code error;
+  const auto path = std::filesystem::read_symlink("/proc/self/exe", error);
+  if (error) throw std::runtime_error("cannot locate this executable: " + error.message());
+  return path.string();
+}
+
+int parse_index(const std::string& text) {
+  try {
+    size_t used = 0;
+    const int index = std::stoi(text, &used);
+    if (used == text.size() && index >= 0) return index;
+  } catch (const std::exception&) {
+  }
+  throw corrmp::ConfigError("--sweep-job: '" + text + "' is not a job index");
+}
 
 }  // namespace
 
@@ -49,20 +96,90 @@ int main(int argc, char** argv) {
                "collect demonstrations and fit context extractors afresh instead of reusing "
                "<out>/cache (the fresh results still replace the cached ones)");
   app.add_flag("-q,--quiet", quiet, "only warnings and errors on stderr");
+
+  bool multirun = false;
+  corrmp::SweepDriverOptions sweep_options;
+  std::string resume;
+  std::vector<std::string> sweep_job;
+  std::vector<std::string> emit;
+  int threads = static_cast<int>(std::max(1u, std::thread::hardware_concurrency()));
+  app.add_flag("-m,--multirun", multirun,
+               "sweep: overrides with a,b,c, range(start,stop[,step]) or choice(a,b) values "
+               "are axes; every combination runs");
+  app.add_option("-j,--jobs", sweep_options.parallel_jobs, "sweep jobs to run at once")
+      ->check(CLI::Range(1, 256))
+      ->capture_default_str();
+  app.add_option("--threads", threads, "threads of this run (of all jobs, for a sweep)")
+      ->check(CLI::Range(1, 1024))
+      ->capture_default_str();
+  app.add_option("--resume", resume, "run a sweep's jobs that have no completed run yet");
+  app.add_option("--launcher", sweep_options.launcher, "where a sweep's jobs run")
+      ->check(CLI::IsMember({"local", "slurm"}))
+      ->capture_default_str();
+  app.add_option("--emit", emit, "only write the sweep's Slurm files: --emit slurm DIR")
+      ->expected(2);
+  app.add_flag("--wait", sweep_options.wait,
+               "slurm: wait for the job array, then merge its shards into --db");
+  app.add_option("--sweep-job", sweep_job, "run job INDEX of a sweep manifest (used by sweeps)")
+      ->expected(2)
+      ->group("");
+  std::vector<std::string> shards;
+  std::string merge_db = "results/results.sqlite";
+  CLI::App* merge = app.add_subcommand("merge", "merge shard databases of a Slurm sweep");
+  merge->add_option("shards", shards, "shard databases")->required();
+  merge->add_option("--db", merge_db, "the database to merge into")->capture_default_str();
   app.footer(kExamples);
   if (const auto exit_code = corrmp::parse_command_line(app, argc, argv)) return *exit_code;
 
   corrmp::setup_logging(quiet);
   options.use_cache = !no_cache;
+  corrmp::set_thread_budget(threads);
   try {
+    if (merge->parsed()) return merge_command(shards, merge_db);
     const corrmp::Registries registries = corrmp::builtin_registries();
     if (list) {
       std::cout << corrmp::describe_registries(registries);
       return 0;
     }
+    if (!sweep_job.empty()) {
+      corrmp::install_interrupt_handlers();
+      return corrmp::run_sweep_job(sweep_job[0], parse_index(sweep_job[1]), options, registries);
+    }
+    sweep_options.run = options;
+    sweep_options.threads = threads;
+    if (!emit.empty()) {
+      if (emit[0] != "slurm") {
+        std::cerr << "run_experiment: --emit takes 'slurm DIR'\n";
+        return 2;
+      }
+      sweep_options.emit_dir = emit[1];
+    }
+    if (!resume.empty()) {
+      corrmp::ResultStore store(options.db_path);
+      const auto sweep = corrmp::stored_sweep(store, resume);
+      if (!sweep) {
+        std::cerr << "run_experiment: no sweep '" << resume << "' in " << options.db_path << "\n";
+        return 2;
+      }
+      corrmp::install_interrupt_handlers();
+      sweep_options.executable = this_executable();
+      return corrmp::drive_sweep(*sweep, sweep_options);
+    }
     if (config_path.empty()) {
       std::cerr << "run_experiment: a CONFIG file is required (see --help)\n";
       return 2;
+    }
+    if (multirun || corrmp::is_sweep_file(config_path) || !emit.empty() ||
+        sweep_options.launcher != "local") {
+      const corrmp::Sweep sweep = corrmp::define_sweep(config_path, overrides);
+      corrmp::check_sweep_jobs(sweep, registries);
+      if (print_config) {
+        std::cout << corrmp::manifest_yaml(sweep);
+        return 0;
+      }
+      corrmp::install_interrupt_handlers();
+      sweep_options.executable = this_executable();
+      return corrmp::drive_sweep(sweep, sweep_options);
     }
     corrmp::Experiment experiment = corrmp::load_experiment(config_path, overrides, registries);
     if (print_config) {

@@ -142,8 +142,11 @@ TrainingReport train_cnmp(CnmpModel& model, const std::vector<CnmpTrajectory>& t
       loss_sum = 0.0;
       loss_count = 0;
       status = fmt::format("loss {:.3f}", report.final_loss);
+      TrainingCurvePoint point{update, report.final_loss, std::nan(""), std::nan("")};
       if (!validation.empty()) {
         const TrajectoryError error = prediction_error(model, validation);
+        point.validation_mean = error.mean;
+        point.validation_max = error.max;
         status += fmt::format(", validation error {:.4g} (max {:.4g})", error.mean, error.max);
         if (error.mean < best_error) {
           best_error = error.mean;
@@ -152,6 +155,7 @@ TrainingReport train_cnmp(CnmpModel& model, const std::vector<CnmpTrajectory>& t
           report.best_update = update;
         }
       }
+      report.curve.push_back(point);
     }
     progress.advance(1, status);
   }

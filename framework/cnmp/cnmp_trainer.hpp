@@ -78,12 +78,23 @@ class TrajectoryErrorAccumulator {
 // as one row (x then y).
 Eigen::MatrixXd first_observation(const Eigen::MatrixXd& x, const Eigen::MatrixXd& y);
 
+// One point of the training curve, at each validation: the mean loss (the
+// Gaussian negative log-likelihood) over the updates since the previous point
+// and the validation error then (NaN without validation data).
+struct TrainingCurvePoint {
+  int64_t update = 0;
+  double loss = 0.0;
+  double validation_mean = 0.0;
+  double validation_max = 0.0;
+};
+
 struct TrainingReport {
   int64_t updates = 0;
   int64_t best_update = 0;
   double final_loss = 0.0;  // mean loss over the last validation interval
   TrajectoryError best_validation;
   double seconds = 0.0;
+  std::vector<TrainingCurvePoint> curve;
 };
 
 // Error of predictions conditioned on each trajectory's first point and context,

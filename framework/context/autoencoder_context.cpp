@@ -6,12 +6,14 @@
 
 #include <algorithm>
 #include <filesystem>
+#include <optional>
 
 #include "context/autoencoder/autoencoder_figures.hpp"
 #include "context/autoencoder/autoencoder_images.hpp"
 #include "context/autoencoder/autoencoder_trainer.hpp"
 #include "core/config/config_node.hpp"
 #include "core/config/config_reader.hpp"
+#include "core/file_lock.hpp"
 
 namespace corrmp {
 
@@ -68,6 +70,10 @@ void AutoencoderContext::fit(const std::vector<Demonstration>& demos, const Extr
   const std::string path =
       cache.directory.empty() ? "" : cache.directory + "/autoencoder-" + key + ".cmpm";
   model_.reset();
+  // Concurrent runs (a sweep's jobs) wanting the same model: one trains it,
+  // the others wait for it and reuse it.
+  std::optional<FileLock> lock;
+  if (!path.empty()) lock.emplace(path + ".lock");
   if (!path.empty() && std::filesystem::exists(path)) {
     try {
       model_ = std::make_unique<ConvAutoencoder<float>>(load_autoencoder(path));
@@ -89,6 +95,7 @@ void AutoencoderContext::fit(const std::vector<Demonstration>& demos, const Extr
       save_autoencoder(*model_, path);
     }
   }
+  lock.reset();
   const nn::Mat<float> train_batch = images_to_batch(train, model_->image_shape());
   train_mse_ = model_->reconstruction_mse(train_batch);
   if (!test.empty()) {

@@ -1,10 +1,15 @@
 // Progress of long loops (collection, training, evaluation): a bar with rate and
 // ETA redrawn on stderr when stderr is a terminal, periodic log lines otherwise
 // (so CI logs and log.txt show progress too). Silent on stderr with --quiet.
+// Thread-safe: one Progress may be advanced from several threads, and several
+// may run at once (segment networks trained concurrently); while more than one
+// is active, none draws a bar: each logs a line per tenth of its work instead
+// of fighting over one terminal line.
 #pragma once
 
 #include <chrono>
 #include <cstdint>
+#include <mutex>
 #include <string>
 
 namespace corrmp {
@@ -28,6 +33,7 @@ class Progress {
   using Clock = std::chrono::steady_clock;
   double elapsed() const;
   void draw(const std::string& status);
+  void log_line(const std::string& status);
 
   std::string label_;
   int64_t total_;
@@ -37,6 +43,7 @@ class Progress {
   Clock::time_point start_;
   Clock::time_point last_report_;
   int last_logged_decile_ = 0;
+  std::mutex mutex_;  // guards the counts and times above
 };
 
 }  // namespace corrmp

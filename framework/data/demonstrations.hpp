@@ -59,7 +59,9 @@ class DemonstrationSource {
  public:
   virtual ~DemonstrationSource() = default;
   // Draws (or loads) the demonstrations; `rng` is this component's own stream.
-  // `environment` is the experiment's environment, or null when it has none.
+  // `environment` is the experiment's environment, or null when it has none;
+  // experts collect in parallel, each thread in its own Environment::clone()
+  // (data/expert_collection.hpp).
   virtual DemonstrationSplit collect(Environment* environment, Rng& rng) = 0;
   // The segments every demonstration holds; empty when only the data tells.
   virtual std::vector<std::string> segments() const { return {}; }

@@ -8,6 +8,7 @@
 
 #include <Eigen/Core>
 #include <map>
+#include <memory>
 #include <string>
 #include <vector>
 
@@ -82,6 +83,12 @@ class Environment {
  public:
   virtual ~Environment() = default;
 
+  // A new environment with the same parameters, in the state after
+  // construction, for another thread (Bullet worlds cannot be shared): experts
+  // collect their demonstrations with one environment per thread. Null when
+  // the task cannot make one; its experts then collect on one thread.
+  virtual std::unique_ptr<Environment> clone() const { return nullptr; }
+
   virtual TaskReport report() const = 0;
 
   virtual Scenario sample_scenario(Rng& rng) const = 0;
@@ -125,6 +132,28 @@ class Environment {
   virtual void write_figures(const std::string& /*directory*/,
                              const std::vector<EvaluatedTrial>& /*trials*/,
                              const std::vector<Demonstration>& /*train*/) const {}
+};
+
+// Environments for up to `workers` threads: `first` and clones of it (only
+// `first` when it cannot be cloned). Clones are made at construction, on the
+// calling thread.
+class EnvironmentCopies {
+ public:
+  EnvironmentCopies(Environment& first, int workers) : first_(first) {
+    for (int w = 1; w < workers; ++w) {
+      std::unique_ptr<Environment> copy = first.clone();
+      if (!copy) break;
+      copies_.push_back(std::move(copy));
+    }
+  }
+  int size() const { return static_cast<int>(copies_.size()) + 1; }
+  Environment& operator[](int worker) {
+    return worker == 0 ? first_ : *copies_.at(static_cast<size_t>(worker - 1));
+  }
+
+ private:
+  Environment& first_;
+  std::vector<std::unique_ptr<Environment>> copies_;
 };
 
 }  // namespace corrmp

@@ -14,6 +14,7 @@
 #include "experiment/environment_evaluation.hpp"
 #include "experiment/offline_evaluation.hpp"
 #include "experiment/provenance.hpp"
+#include "experiment/training_curves.hpp"
 #include "experiment/trajectory_outputs.hpp"
 #include "store/result_store.hpp"
 
@@ -126,7 +127,8 @@ void run_stages(Experiment& experiment, const fs::path& dir, const RunOptions& o
   }
 
   Rng train_rng = experiment.context.seeds.stream("policy.training");
-  for (const auto& summary : experiment.policy->fit(demos.train, demos.validation, train_rng)) {
+  const auto summaries = experiment.policy->fit(demos.train, demos.validation, train_rng);
+  for (const auto& summary : summaries) {
     spdlog::info(
         "'{}': {} parameters, best validation error {:.4g} (max {:.4g}) at update {} "
         "of {}, {:.1f} s",
@@ -136,6 +138,7 @@ void run_stages(Experiment& experiment, const fs::path& dir, const RunOptions& o
     metrics.push_back({summary.segment + "_parameters", static_cast<double>(summary.parameters)});
   }
   experiment.policy->save((dir / "models").string());
+  write_training_curves(summaries, (dir / "training_curves.csv").string());
 
   const bool write = experiment.config.output.write_predictions;
   if (experiment.environment) {
@@ -186,9 +189,17 @@ RunResult run_pipeline(Experiment& experiment, const RunOptions& options) {
   const GitState git = source_git_state();
   RunResult result;
   result.status = "running";
-  result.run_id = store.begin_run(RunRecord{experiment.config.experiment.name,
-                                            experiment.resolved_yaml, experiment.config_hash,
-                                            experiment.config.seed, git.commit, git.dirty, ""});
+  RunRecord record{experiment.config.experiment.name,
+                   experiment.resolved_yaml,
+                   experiment.config_hash,
+                   experiment.config.seed,
+                   git.commit,
+                   git.dirty,
+                   "",
+                   options.sweep_id,
+                   options.job_index,
+                   options.axes_json};
+  result.run_id = store.begin_run(record);
   const std::string started_at = utc_timestamp();
   const fs::path dir =
       fs::path(options.out_dir) / experiment.config.experiment.name / std::to_string(result.run_id);

@@ -16,6 +16,10 @@ struct RunOptions {
   // false: collect demonstrations and fit extractors afresh (the results are
   // still written to the cache for later runs).
   bool use_cache = true;
+  // Set when the run is a job of a sweep: recorded with the run.
+  std::string sweep_id;
+  int job_index = 0;
+  std::string axes_json;  // the job's axis values
 };
 
 struct RunResult {

@@ -7,6 +7,8 @@
 #include <algorithm>
 #include <cmath>
 
+#include "experiment/report_text.hpp"
+
 namespace corrmp {
 
 namespace {
@@ -109,20 +111,6 @@ std::vector<PaperRow> paper_rows(const std::string& tables_path) {
     rows.push_back(row);
   }
   return rows;
-}
-
-// Text inside a Markdown table cell: a '|' would end the cell.
-std::string markdown_cell(const std::string& text) {
-  std::string escaped;
-  for (char c : text) escaped += c == '|' ? std::string("\\|") : std::string(1, c);
-  return escaped;
-}
-
-std::string csv_cell(const std::string& text) {
-  if (text.find_first_of(",\"\n") == std::string::npos) return text;
-  std::string quoted = "\"";
-  for (char c : text) quoted += c == '"' ? std::string("\"\"") : std::string(1, c);
-  return quoted + "\"";
 }
 
 }  // namespace

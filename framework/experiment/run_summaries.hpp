@@ -1,10 +1,13 @@
 // Recorded runs read back from the result store for reports: each run's
-// status, trial count, metrics and flattened resolved config, and the settings
-// that vary between runs of the same experiment (a sweep's parameters).
+// status, trials (counted, and tallied per expected action), metrics,
+// flattened resolved config and sweep axes, and the settings that vary between
+// runs of the same experiment (a sweep's parameters). docs/architecture.md,
+// "Database".
 #pragma once
 
 #include <cstdint>
 #include <map>
+#include <optional>
 #include <string>
 #include <vector>
 
@@ -12,12 +15,25 @@
 
 namespace corrmp {
 
+// A run's trials with one expected action: how many, how many succeeded, and
+// how often the policy chose each action (the paper's "action choice").
+struct ActionTally {
+  int trials = 0;
+  int successes = 0;
+  std::map<std::string, int> chosen;
+};
+
 struct RunSummary {
   int64_t id = 0;
   std::string experiment;
   std::string status;
   int trials = 0;
-  std::map<std::string, std::string> settings;  // the resolved config, flattened
+  int successes = 0;                               // trials that succeeded
+  std::map<std::string, ActionTally> by_expected;  // by expected action ("" if none)
+  std::string sweep_id;                            // empty outside a sweep
+  int job_index = -1;                              // the job within the sweep
+  std::map<std::string, std::string> axes;         // the sweep's axis values, as written
+  std::map<std::string, std::string> settings;     // the resolved config, flattened
   std::map<std::string, double> metrics;
   std::vector<std::string> metric_order;  // the names as the run recorded them
 };
@@ -25,12 +41,32 @@ struct RunSummary {
 struct ReportQuery {
   std::vector<std::string> experiments;  // empty: every experiment
   std::vector<int64_t> runs;             // empty: every run
+  std::vector<std::string> sweeps;       // empty: runs of any sweep or none
   int last = 0;                          // > 0: only the newest `last` runs
   bool completed_only = true;
 };
 
-// The runs the query selects, oldest first.
+// The runs the query selects, oldest first. Databases written before sweeps
+// were recorded (no runs.sweep_id) load with empty sweep fields; selecting by
+// sweep in one throws StoreError.
 std::vector<RunSummary> load_run_summaries(ResultStore& store, const ReportQuery& query);
+
+// Whether runs have the sweep columns (sweep_id, job_index, axes).
+bool has_sweep_columns(ResultStore& store);
+
+struct SweepSummary {
+  std::string id, name, created_at;
+  int jobs = 0;  // 0 when the database has no sweeps table
+};
+
+// The sweep with this id, from the sweeps table or, without one, from the runs
+// that name it; nothing when neither knows it.
+std::optional<SweepSummary> find_sweep(ResultStore& store, const std::string& id);
+
+// A setting of the run by key: the sweep axis value as written when the key is
+// an axis, else the flattened config's value; "experiment" is the experiment's
+// name. Nothing when the run has no such setting.
+std::optional<std::string> run_setting(const RunSummary& run, const std::string& key);
 
 // A YAML document as dotted key paths to scalar text; lists are one value in
 // flow style ("[a, b]"), lists of maps are indexed ("segments.0.name").

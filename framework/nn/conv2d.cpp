@@ -1,6 +1,9 @@
 // 2-D convolution by im2col + matrix product (formulas in nn/conv2d.hpp).
 #include "nn/conv2d.hpp"
 
+#include <algorithm>
+
+#include "nn/channel_major.hpp"
 #include "nn/check.hpp"
 #include "nn/im2col.hpp"
 
@@ -18,20 +21,37 @@ Conv2d<S>::Conv2d(const Conv2dOptions& options, Index input_height, Index input_
   const double bound = default_init_bound(geometry_.patch_size());
   fill_uniform(rng, bound, weight_.data(), weight_.size());
   fill_uniform(rng, bound, bias_.data(), bias_.size());
+  if (options.kernel_size == 3 && options.stride == 1 && options.padding == 1)
+    winograd_.emplace(options.in_channels, options.out_channels, input_height, input_width,
+                      KernelLayout::kConv);
 }
 
 template <class S>
 void Conv2d<S>::forward(ConstMatRef<S> x, MatRef<S> y) {
   check_shape("Conv2d::forward", "x", x, x.rows(), input_shape().size());
   check_shape("Conv2d::forward", "y", y, x.rows(), output_shape().size());
-  const Index cout = options_.out_channels, positions = geometry_.positions();
-  MatMap<S> cols = columns_.resize(geometry_.patch_size(), positions);
-  for (Index n = 0; n < x.rows(); ++n) {
-    im2col(x.row(n).data(), geometry_, cols.data());
-    MatMap<S> y_n(y.row(n).data(), cout, positions);
-    y_n.noalias() = weight_ * cols;
-    y_n.colwise() += bias_;
+  if (winograd_) {
+    winograd_->forward(weight_.data(), bias_.data(), x, y);
+    return;
   }
+  const Index cout = options_.out_channels, positions = geometry_.positions();
+  for_each_position_chunk(geometry_, x.rows(), [&](const PositionChunk& chunk) {
+    const Index columns = chunk.columns(geometry_);
+    MatMap<S> cols = columns_.resize(geometry_.patch_size(), columns);
+    im2col_chunk(x.data(), x.outerStride(), geometry_, chunk, cols.data());
+    S* y_first = y.row(chunk.image_begin).data();
+    if (chunk.images == 1) {  // positions of one image: a block of its rows, written in place
+      StridedMap<S> out(y_first + chunk.row_begin * geometry_.out_width, cout, columns,
+                        Eigen::OuterStride<>(positions));
+      out.colwise() = bias_;
+      out.noalias() += weight_ * cols;
+      return;
+    }
+    MatMap<S> out = outputs_.resize(cout, columns);
+    out.colwise() = bias_;
+    out.noalias() += weight_ * cols;
+    scatter_channel_major(out.data(), chunk.images, cout, positions, y_first, y.outerStride());
+  });
 }
 
 template <class S>
@@ -41,29 +61,47 @@ void Conv2d<S>::check_batch(const char* where, ConstMatRef<S> x, ConstMatRef<S> 
 }
 
 template <class S>
+void Conv2d<S>::backward_chunks(ConstMatRef<S> x, ConstMatRef<S> dy, S* dx, Index dx_stride) {
+  if (winograd_) {
+    winograd_->backward(weight_.data(), x, dy, weight_grad_.data(), bias_grad_.data(), dx,
+                        dx_stride);
+    return;
+  }
+  const Index cout = options_.out_channels, positions = geometry_.positions();
+  for_each_position_chunk(geometry_, x.rows(), [&](const PositionChunk& chunk) {
+    const Index columns = chunk.columns(geometry_);
+    MatMap<S> cols = columns_.resize(geometry_.patch_size(), columns);
+    im2col_chunk(x.data(), x.outerStride(), geometry_, chunk, cols.data());
+    const S* dy_first = dy.row(chunk.image_begin).data();
+    // dY of the chunk, channel-major: a block of one image's rows, or the images gathered.
+    const ConstStridedMap<S> dy_chunk =
+        chunk.images == 1 ? ConstStridedMap<S>(dy_first + chunk.row_begin * geometry_.out_width,
+                                               cout, columns, Eigen::OuterStride<>(positions))
+                          : ConstStridedMap<S>(outputs_.resize(cout, columns).data(), cout, columns,
+                                               Eigen::OuterStride<>(columns));
+    if (chunk.images > 1)
+      gather_channel_major(dy_first, dy.outerStride(), chunk.images, cout, positions,
+                           outputs_.view().data());
+    weight_grad_.noalias() += dy_chunk * cols.transpose();
+    bias_grad_.noalias() += dy_chunk.rowwise().sum();
+    if (dx == nullptr) return;
+    MatMap<S> col_grads = column_grads_.resize(geometry_.patch_size(), columns);
+    col_grads.noalias() = weight_.transpose() * dy_chunk;
+    col2im_chunk(col_grads.data(), geometry_, chunk, dx, dx_stride);
+  });
+}
+
+template <class S>
 void Conv2d<S>::accumulate_param_grad(ConstMatRef<S> x, ConstMatRef<S> dy) {
   check_batch("Conv2d::backward", x, dy);
-  const Index cout = options_.out_channels, positions = geometry_.positions();
-  MatMap<S> cols = columns_.resize(geometry_.patch_size(), positions);
-  for (Index n = 0; n < x.rows(); ++n) {
-    im2col(x.row(n).data(), geometry_, cols.data());
-    ConstMatMap<S> dy_n(dy.row(n).data(), cout, positions);
-    weight_grad_.noalias() += dy_n * cols.transpose();
-    bias_grad_.noalias() += dy_n.rowwise().sum();
-  }
+  backward_chunks(x, dy, nullptr, 0);
 }
 
 template <class S>
 void Conv2d<S>::backward(ConstMatRef<S> x, ConstMatRef<S> dy, MatRef<S> dx) {
+  check_batch("Conv2d::backward", x, dy);
   check_shape("Conv2d::backward", "dx", dx, x.rows(), input_shape().size());
-  accumulate_param_grad(x, dy);
-  const Index cout = options_.out_channels, positions = geometry_.positions();
-  MatMap<S> col_grads = column_grads_.resize(geometry_.patch_size(), positions);
-  for (Index n = 0; n < x.rows(); ++n) {
-    ConstMatMap<S> dy_n(dy.row(n).data(), cout, positions);
-    col_grads.noalias() = weight_.transpose() * dy_n;
-    col2im(col_grads.data(), geometry_, dx.row(n).data());
-  }
+  backward_chunks(x, dy, dx.data(), dx.outerStride());
 }
 
 template <class S>

@@ -8,14 +8,21 @@
 //   backward:  dL/dW += dY_n U^T                          (accumulated)
 //              dL/db += dY_n 1                            (row sums, accumulated)
 //              dL/dx_n = col2im(W^T dY_n)                 (overwritten)
+// The images of a batch are processed in chunks (nn/im2col.hpp, images_per_chunk): U is the
+// column matrix of a whole chunk and dY its output gradient in channel-major order
+// (nn/channel_major.hpp), so each formula above is one matrix product per chunk, summing over
+// every pixel of the chunk's images at once. Y starts as b 1^T and the product is added to it.
+// Layers with kernel 3, stride 1 and padding 1 compute the same formulas by Winograd's F(2x2, 3x3)
+// (nn/winograd_conv3x3.hpp), with 2.25 times fewer multiply-adds.
 // Initialisation follows torch.nn.Conv2d: W, b ~ U(-1/sqrt(Cin k k), 1/sqrt(Cin k k)), W first.
-// The layer owns only scratch column buffers, sized on first use; backward takes the forward
-// input again and recomputes U (cheap next to the products). The layer itself allocates nothing
-// after the first call, but products too large for Eigen's 128 KB stack blocking limit (the
+// The layer owns only scratch buffers, sized on first use; backward takes the forward input
+// again and recomputes U (cheap next to the products). The layer itself allocates nothing after
+// the first call, but products too large for Eigen's 128 KB stack blocking limit (the
 // autoencoder's 32x32 layers) let Eigen allocate its GEMM workspace: a few allocations per
 // call, negligible next to the millions of multiply-adds of such a product.
 #pragma once
 
+#include <optional>
 #include <string>
 #include <vector>
 
@@ -24,6 +31,7 @@
 #include "nn/parameter.hpp"
 #include "nn/rng.hpp"
 #include "nn/tensor.hpp"
+#include "nn/winograd_conv3x3.hpp"
 
 namespace corrmp::nn {
 
@@ -65,6 +73,8 @@ class Conv2d {
 
  private:
   void check_batch(const char* where, ConstMatRef<S> x, ConstMatRef<S> dy) const;
+  // The parameter gradients and, when dx is not null, the input gradient (rows dx_stride apart).
+  void backward_chunks(ConstMatRef<S> x, ConstMatRef<S> dy, S* dx, Index dx_stride);
 
   Conv2dOptions options_;
   PatchGeometry geometry_;
@@ -72,8 +82,10 @@ class Conv2d {
   Vec<S> bias_;
   Mat<S> weight_grad_;
   Vec<S> bias_grad_;
-  Buffer<S> columns_;       // U of one image
-  Buffer<S> column_grads_;  // W^T dY_n of one image
+  Buffer<S> columns_;                           // U of one chunk
+  Buffer<S> column_grads_;                      // W^T dY of one chunk
+  Buffer<S> outputs_;                           // Y or dY of one chunk, channel-major
+  std::optional<WinogradConv3x3<S>> winograd_;  // for kernel 3, stride 1, padding 1
 };
 
 extern template class Conv2d<float>;

@@ -3,8 +3,10 @@
 
 #include <fmt/format.h>
 
+#include <algorithm>
 #include <stdexcept>
 
+#include "nn/channel_major.hpp"
 #include "nn/check.hpp"
 #include "nn/im2col.hpp"
 
@@ -44,22 +46,48 @@ ConvTranspose2d<S>::ConvTranspose2d(const ConvTranspose2dOptions& options, Index
   const double bound = default_init_bound(geometry_.patch_size());
   fill_uniform(rng, bound, weight_.data(), weight_.size());
   fill_uniform(rng, bound, bias_.data(), bias_.size());
+  if (options.kernel_size == 3 && options.stride == 1 && options.padding == 1 &&
+      options.output_padding == 0)
+    winograd_.emplace(options.in_channels, options.out_channels, input_height, input_width,
+                      KernelLayout::kTransposed);
 }
+
+namespace {
+
+// The chunk's input images (rows images + n * stride), channel-major: a block of one image's
+// rows in place, or the images gathered into `buffer`.
+template <class S>
+ConstStridedMap<S> channel_major_chunk(const PatchGeometry& g, const PositionChunk& chunk,
+                                       Index channels, const S* images, Index stride,
+                                       Buffer<S>& buffer) {
+  const Index columns = chunk.columns(g), positions = g.positions();
+  const S* first = images + chunk.image_begin * stride;
+  if (chunk.images == 1)
+    return ConstStridedMap<S>(first + chunk.row_begin * g.out_width, channels, columns,
+                              Eigen::OuterStride<>(positions));
+  MatMap<S> gathered = buffer.resize(channels, columns);
+  gather_channel_major(first, stride, chunk.images, channels, positions, gathered.data());
+  return ConstStridedMap<S>(gathered.data(), channels, columns, Eigen::OuterStride<>(columns));
+}
+
+}  // namespace
 
 template <class S>
 void ConvTranspose2d<S>::forward(ConstMatRef<S> x, MatRef<S> y) {
   check_shape("ConvTranspose2d::forward", "x", x, x.rows(), input_shape().size());
   check_shape("ConvTranspose2d::forward", "y", y, x.rows(), output_shape().size());
-  const Index cin = options_.in_channels, cout = options_.out_channels;
-  const Index in_pixels = geometry_.positions();
-  const Index out_pixels = output_shape().height * output_shape().width;
-  MatMap<S> cols = columns_.resize(geometry_.patch_size(), in_pixels);
-  for (Index n = 0; n < x.rows(); ++n) {
-    ConstMatMap<S> x_n(x.row(n).data(), cin, in_pixels);
-    cols.noalias() = weight_.transpose() * x_n;
-    col2im(cols.data(), geometry_, y.row(n).data());
-    MatMap<S>(y.row(n).data(), cout, out_pixels).colwise() += bias_;
+  if (winograd_) {
+    winograd_->forward(weight_.data(), bias_.data(), x, y);
+    return;
   }
+  const Index cin = options_.in_channels;
+  for_each_position_chunk(geometry_, x.rows(), [&](const PositionChunk& chunk) {
+    const ConstStridedMap<S> x_chunk =
+        channel_major_chunk(geometry_, chunk, cin, x.data(), x.outerStride(), channel_major_);
+    MatMap<S> cols = columns_.resize(geometry_.patch_size(), chunk.columns(geometry_));
+    cols.noalias() = weight_.transpose() * x_chunk;
+    col2im_chunk(cols.data(), geometry_, chunk, y.data(), y.outerStride(), bias_.data());
+  });
 }
 
 template <class S>
@@ -67,17 +95,37 @@ void ConvTranspose2d<S>::backward(ConstMatRef<S> x, ConstMatRef<S> dy, MatRef<S>
   check_shape("ConvTranspose2d::backward", "x", x, x.rows(), input_shape().size());
   check_shape("ConvTranspose2d::backward", "dy", dy, x.rows(), output_shape().size());
   check_shape("ConvTranspose2d::backward", "dx", dx, x.rows(), input_shape().size());
+  if (winograd_) {
+    winograd_->backward(weight_.data(), x, dy, weight_grad_.data(), bias_grad_.data(), dx.data(),
+                        dx.outerStride());
+    return;
+  }
   const Index cin = options_.in_channels, cout = options_.out_channels;
   const Index in_pixels = geometry_.positions();
   const Index out_pixels = output_shape().height * output_shape().width;
-  MatMap<S> cols = columns_.resize(geometry_.patch_size(), in_pixels);
-  for (Index n = 0; n < x.rows(); ++n) {
-    im2col(dy.row(n).data(), geometry_, cols.data());
-    ConstMatMap<S> x_n(x.row(n).data(), cin, in_pixels);
-    weight_grad_.noalias() += x_n * cols.transpose();
-    bias_grad_.noalias() += ConstMatMap<S>(dy.row(n).data(), cout, out_pixels).rowwise().sum();
-    MatMap<S>(dx.row(n).data(), cin, in_pixels).noalias() = weight_ * cols;
-  }
+  for_each_position_chunk(geometry_, x.rows(), [&](const PositionChunk& chunk) {
+    const Index columns = chunk.columns(geometry_);
+    if (chunk.row_begin == 0)
+      for (Index n = chunk.image_begin; n < chunk.image_begin + chunk.images; ++n)
+        bias_grad_.noalias() += ConstMatMap<S>(dy.row(n).data(), cout, out_pixels).rowwise().sum();
+    MatMap<S> cols = columns_.resize(geometry_.patch_size(), columns);
+    im2col_chunk(dy.data(), dy.outerStride(), geometry_, chunk, cols.data());
+    const ConstStridedMap<S> x_chunk =
+        channel_major_chunk(geometry_, chunk, cin, x.data(), x.outerStride(), channel_major_);
+    weight_grad_.noalias() += x_chunk * cols.transpose();
+    S* dx_first = dx.row(chunk.image_begin).data();
+    if (chunk.images == 1) {  // a block of one image's rows, written in place
+      StridedMap<S>(dx_first + chunk.row_begin * geometry_.out_width, cin, columns,
+                    Eigen::OuterStride<>(in_pixels))
+          .noalias() = weight_ * cols;
+      return;
+    }
+    // The gathered inputs are no longer needed: their buffer takes the input gradients.
+    MatMap<S> dx_chunk = channel_major_.resize(cin, columns);
+    dx_chunk.noalias() = weight_ * cols;
+    scatter_channel_major(dx_chunk.data(), chunk.images, cin, in_pixels, dx_first,
+                          dx.outerStride());
+  });
 }
 
 template <class S>

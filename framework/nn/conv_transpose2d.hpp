@@ -10,10 +10,17 @@
 //              dL/dW += X_n V^T                          (accumulated)
 //              dL/db += dY_n 1                           (row sums, accumulated)
 //              dL/dX_n = W V                             (overwritten)
+// The images of a batch are processed in chunks (nn/im2col.hpp, images_per_chunk), each
+// formula being one matrix product over all pixels of the chunk's images, with X and dL/dX in
+// channel-major order (nn/channel_major.hpp); col2im starts Y at b 1^T.
+// With kernel 3, stride 1, padding 1 (and so no output padding) the layer is the convolution with
+// the kernel flipped and the channel roles exchanged, computed by Winograd's F(2x2, 3x3)
+// (nn/winograd_conv3x3.hpp).
 // Initialisation follows torch.nn.ConvTranspose2d, whose fan_in is computed from weight
 // dimension 1, i.e. fan_in = Cout k k: W, b ~ U(-1/sqrt(Cout k k), 1/sqrt(Cout k k)), W first.
 #pragma once
 
+#include <optional>
 #include <string>
 #include <vector>
 
@@ -22,6 +29,7 @@
 #include "nn/parameter.hpp"
 #include "nn/rng.hpp"
 #include "nn/tensor.hpp"
+#include "nn/winograd_conv3x3.hpp"
 
 namespace corrmp::nn {
 
@@ -68,7 +76,9 @@ class ConvTranspose2d {
   Vec<S> bias_;
   Mat<S> weight_grad_;
   Vec<S> bias_grad_;
-  Buffer<S> columns_;
+  Buffer<S> columns_;        // W^T X or im2col(dY) of one chunk
+  Buffer<S> channel_major_;  // X, then dL/dX, of one chunk in channel-major order
+  std::optional<WinogradConv3x3<S>> winograd_;  // for kernel 3, stride 1, padding 1
 };
 
 extern template class ConvTranspose2d<float>;

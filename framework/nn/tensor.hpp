@@ -41,4 +41,13 @@ using MatMap = Eigen::Map<Mat<S>>;
 template <class S>
 using ConstMatMap = Eigen::Map<const Mat<S>>;
 
+/// A view of storage shaped as a row-major matrix whose rows lie `outer stride` values apart
+/// (e.g. a run of columns of a wider row-major matrix).
+template <class S>
+using StridedMap = Eigen::Map<Mat<S>, 0, Eigen::OuterStride<>>;
+
+/// Read-only version of StridedMap.
+template <class S>
+using ConstStridedMap = Eigen::Map<const Mat<S>, 0, Eigen::OuterStride<>>;
+
 }  // namespace corrmp::nn

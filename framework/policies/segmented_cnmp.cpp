@@ -6,6 +6,8 @@
 
 #include <filesystem>
 
+#include "core/thread_budget.hpp"
+
 namespace corrmp {
 
 std::vector<CnmpTrajectory> segment_trajectories(const std::vector<Demonstration>& demos,
@@ -24,12 +26,19 @@ std::vector<CnmpTrajectory> segment_trajectories(const std::vector<Demonstration
 SegmentedCnmp::SegmentedCnmp(const SegmentedCnmpParams& params, uint64_t seed)
     : params_(params), seed_(seed) {}
 
+// The segment networks are independent, so they train concurrently (core/thread_budget.hpp).
+// Each trains on its own stream, derived from one draw of `rng` and the segment's name, so the
+// models are the same whatever the number of threads.
 std::vector<PolicyTrainingSummary> SegmentedCnmp::fit(const std::vector<Demonstration>& train,
                                                       const std::vector<Demonstration>& validation,
                                                       Rng& rng) {
-  std::vector<PolicyTrainingSummary> summaries;
   models_.clear();
-  for (const SegmentSpec& segment : params_.segments) {
+  const uint64_t training_seed = rng();
+  const size_t count = params_.segments.size();
+  std::vector<PolicyTrainingSummary> summaries(count);
+  std::vector<std::unique_ptr<CnmpModel>> models(count);
+  parallel_for(static_cast<int>(count), [&](int index) {
+    const SegmentSpec& segment = params_.segments[static_cast<size_t>(index)];
     const auto train_data = segment_trajectories(train, segment.name, segment.use_context);
     const auto validation_data =
         segment_trajectories(validation, segment.name, segment.use_context);
@@ -41,12 +50,14 @@ std::vector<PolicyTrainingSummary> SegmentedCnmp::fit(const std::vector<Demonstr
     spdlog::info("training the '{}' CNMP: {} parameters, d_x {}, d_y {}, context {}", segment.name,
                  model->network().parameter_count(), architecture.d_x, architecture.d_y,
                  architecture.d_context);
-    PolicyTrainingSummary summary{segment.name, {}, model->network().parameter_count()};
-    summary.report = train_cnmp(*model, train_data, validation_data, params_.training, rng,
+    Rng segment_rng(mix64(training_seed ^ fnv1a64(segment.name)));
+    PolicyTrainingSummary& summary = summaries[static_cast<size_t>(index)];
+    summary = {segment.name, {}, model->network().parameter_count()};
+    summary.report = train_cnmp(*model, train_data, validation_data, params_.training, segment_rng,
                                 "train " + segment.name);
-    summaries.push_back(summary);
-    models_[segment.name] = std::move(model);
-  }
+    models[static_cast<size_t>(index)] = std::move(model);
+  });
+  for (size_t i = 0; i < count; ++i) models_[params_.segments[i].name] = std::move(models[i]);
   return summaries;
 }
 

@@ -1,6 +1,8 @@
 // The paper's method (Section III): one CNMP per segment of the skill, each
 // conditioned on the segment's start point and, where the config says so, on
 // the segment's context vector. The segments are data: a config lists them.
+// The segment networks are independent and train concurrently, each on its own
+// random stream, so the trained networks do not depend on the thread budget.
 #pragma once
 
 #include <map>

@@ -30,7 +30,18 @@ CREATE TABLE IF NOT EXISTS runs (
   out_dir TEXT,
   host TEXT,
   pid INTEGER,
-  failure TEXT
+  failure TEXT,
+  uid TEXT,
+  sweep_id TEXT,
+  job_index INTEGER,
+  axes TEXT
+);
+CREATE TABLE IF NOT EXISTS sweeps (
+  id TEXT PRIMARY KEY,
+  name TEXT NOT NULL,
+  created_at TEXT NOT NULL,
+  jobs INTEGER NOT NULL,
+  manifest TEXT NOT NULL
 );
 CREATE TABLE IF NOT EXISTS trials (
   run_id INTEGER NOT NULL REFERENCES runs(id),
@@ -49,6 +60,17 @@ CREATE TABLE IF NOT EXISTS metrics (
 );
 CREATE INDEX IF NOT EXISTS trials_run ON trials(run_id);
 CREATE INDEX IF NOT EXISTS metrics_run ON metrics(run_id);
+CREATE UNIQUE INDEX IF NOT EXISTS runs_uid ON runs(uid);
+CREATE INDEX IF NOT EXISTS runs_sweep ON runs(sweep_id, job_index);
+)sql";
+
+// Version 3: a run's unique id (for merging databases) and its sweep.
+constexpr const char* kMigrateToV3 = R"sql(
+ALTER TABLE runs ADD COLUMN uid TEXT;
+ALTER TABLE runs ADD COLUMN sweep_id TEXT;
+ALTER TABLE runs ADD COLUMN job_index INTEGER;
+ALTER TABLE runs ADD COLUMN axes TEXT;
+UPDATE runs SET uid = lower(hex(randomblob(16))) WHERE uid IS NULL;
 )sql";
 
 bool process_alive(int64_t pid) {
@@ -136,7 +158,8 @@ void ResultStore::migrate() {
           "another --db",
           path_, version, kSchemaVersion));
     }
-    if (version == 1) execute("ALTER TABLE trials ADD COLUMN details TEXT");  // v2: details
+    if (version >= 1 && version < 2) execute("ALTER TABLE trials ADD COLUMN details TEXT");
+    if (version >= 1 && version < 3) execute(kMigrateToV3);
     if (version < kSchemaVersion) {
       execute(kSchema);
       execute(fmt::format("PRAGMA user_version = {}", kSchemaVersion));
@@ -169,8 +192,10 @@ int64_t ResultStore::begin_run(const RunRecord& run) {
   transaction([&] {
     Statement insert(db_,
                      "INSERT INTO runs (experiment, config, config_hash, seed, status, "
-                     "started_at, git_commit, git_dirty, out_dir, host, pid) VALUES "
-                     "(?, ?, ?, ?, 'running', ?, ?, ?, ?, ?, ?)");
+                     "started_at, git_commit, git_dirty, out_dir, host, pid, uid, sweep_id, "
+                     "job_index, axes) VALUES "
+                     "(?, ?, ?, ?, 'running', ?, ?, ?, ?, ?, ?, lower(hex(randomblob(16))), ?, ?, "
+                     "?)");
     insert.bind(1, run.experiment)
         .bind(2, run.config)
         .bind(3, run.config_hash)
@@ -181,6 +206,11 @@ int64_t ResultStore::begin_run(const RunRecord& run) {
         .bind(8, run.out_dir)
         .bind(9, host_name())
         .bind(10, static_cast<int64_t>(getpid()));
+    if (run.sweep_id.empty()) {
+      insert.bind_null(11).bind_null(12).bind_null(13);
+    } else {
+      insert.bind(11, run.sweep_id).bind(12, int64_t{run.job_index}).bind(13, run.axes);
+    }
     insert.run();
     id = sqlite3_last_insert_rowid(db_);
   });

@@ -27,6 +27,11 @@ struct RunRecord {
   std::string git_commit;
   bool git_dirty = false;
   std::string out_dir;
+  // Set for a run of a sweep: the sweep, the job's index and its axis values
+  // (a JSON object, key -> value as written).
+  std::string sweep_id;
+  int job_index = 0;
+  std::string axes;
 };
 
 struct TrialRecord {
@@ -46,7 +51,7 @@ struct MetricRecord {
 
 class ResultStore {
  public:
-  static constexpr int kSchemaVersion = 2;  // 2: trials.details
+  static constexpr int kSchemaVersion = 3;  // 2: trials.details; 3: runs' uid and sweep
 
   // Opens (creating the file and its folder if needed) and migrates the schema.
   explicit ResultStore(const std::string& path, int busy_timeout_ms = 60000);

@@ -1,9 +1,13 @@
 // Tests of the corridor task: determinism, the expert's success rate and
-// decisions, the correction classifier, and path sampling.
+// decisions, the correction classifier, path sampling, and parallel
+// collection with clones of the environment.
 #include "envs/corridor_push/corridor_push.hpp"
 
 #include <gtest/gtest.h>
 
+#include <opencv2/core.hpp>
+
+#include "core/thread_budget.hpp"
 #include "envs/corridor_push/corridor_expert.hpp"
 #include "envs/corridor_push/path_sampling.hpp"
 
@@ -145,6 +149,72 @@ TEST(CorridorExpert, TheScenariosCollectedDoNotDependOnTheTempoVariation) {
   }
   ASSERT_EQ(scenarios[0].size(), 4u);
   EXPECT_EQ(scenarios[0], scenarios[1]);
+}
+
+// Parallel collection (issue 10): each attempt draws from its own stream and
+// each thread demonstrates in its own clone of the environment, so the split,
+// images included, is the same for any thread budget.
+TEST(CorridorExpert, CollectsTheSameDemonstrationsWhateverTheThreadBudget) {
+  CorridorExpertParams params;
+  params.train = 6;
+  params.validation = 3;
+  params.images = true;
+  std::vector<DemonstrationSplit> splits;
+  const int saved = thread_budget();
+  for (int budget : {1, 2}) {
+    set_thread_budget(budget);
+    CorridorPush env{CorridorPushParams{}};
+    Rng rng(7);
+    splits.push_back(CorridorExpert{params}.collect(&env, rng));
+  }
+  set_thread_budget(saved);
+  const DemonstrationSplit& one = splits[0];
+  const DemonstrationSplit& two = splits[1];
+  ASSERT_EQ(one.train.size(), 6u);
+  ASSERT_EQ(one.validation.size(), 3u);
+  ASSERT_EQ(two.train.size(), 6u);
+  ASSERT_EQ(two.validation.size(), 3u);
+  for (const auto set : {&DemonstrationSplit::train, &DemonstrationSplit::validation}) {
+    for (size_t d = 0; d < (one.*set).size(); ++d) {
+      const Demonstration& a = (one.*set)[d];
+      const Demonstration& b = (two.*set)[d];
+      EXPECT_EQ(a.scenario, b.scenario);
+      EXPECT_EQ(a.decision, b.decision);
+      ASSERT_EQ(a.segments.size(), b.segments.size());
+      for (size_t s = 0; s < a.segments.size(); ++s) {
+        EXPECT_EQ(a.segments[s].y, b.segments[s].y);
+        EXPECT_EQ(a.segments[s].phase_end, b.segments[s].phase_end);
+        EXPECT_EQ(a.segments[s].start.state, b.segments[s].start.state);
+        const cv::Mat& image_a = a.segments[s].start.rgb;
+        const cv::Mat& image_b = b.segments[s].start.rgb;
+        ASSERT_EQ(image_a.empty(), image_b.empty());
+        if (!image_a.empty()) {
+          EXPECT_EQ(cv::norm(image_a, image_b, cv::NORM_INF), 0.0);
+          EXPECT_EQ(cv::norm(a.segments[s].start.depth, b.segments[s].start.depth, cv::NORM_INF),
+                    0.0);
+        }
+      }
+    }
+  }
+  // The demonstrations are of different scenarios.
+  EXPECT_NE(one.train[0].scenario, one.train[1].scenario);
+}
+
+TEST(CorridorPush, AClonePlaysTheSameScenarioIdentically) {
+  CorridorPushParams params;
+  params.corridor_range = 0.05;
+  CorridorPush env{params};
+  const std::unique_ptr<Environment> clone = env.clone();
+  ASSERT_NE(dynamic_cast<CorridorPush*>(clone.get()), nullptr);
+  EXPECT_EQ(static_cast<CorridorPush&>(*clone).params().corridor_range, 0.05);
+  CorridorExpert expert{CorridorExpertParams{}};
+  const Scenario scenario{{"corridor_offset", -0.02}, {"object_dx", 0.004}, {"object_dy", 0.0}};
+  const Demonstration original = expert.demonstrate(env, scenario, false);
+  const Demonstration copied = expert.demonstrate(*clone, scenario, false);
+  for (size_t s = 0; s < original.segments.size(); ++s) {
+    EXPECT_EQ(original.segments[s].y, copied.segments[s].y);
+  }
+  EXPECT_EQ(env.object_position(), static_cast<CorridorPush&>(*clone).object_position());
 }
 
 TEST(PathSampling, KeepsEveryWaypointAndSpacesPointsEvenly) {

@@ -17,7 +17,7 @@ using testing::TempDir;
 
 int64_t add_run(ResultStore& store, const std::string& experiment, const std::string& config,
                 double success, double cor_error) {
-  const int64_t id = store.begin_run({experiment, config, "hash", 0, "", false, ""});
+  const int64_t id = store.begin_run({experiment, config, "hash", 0, "", false, "", "", 0, ""});
   std::vector<TrialRecord> trials;
   for (int t = 0; t < 4; ++t) trials.push_back({t, "{}", "push", "push", t < 4 * success, "", ""});
   store.complete_run(id, trials,
@@ -35,7 +35,7 @@ TEST(RunReport, ErrorColumnsFollowWhatTheRunsRecorded) {
   TempDir dir;
   ResultStore store(dir.file("r.sqlite"));
   add_run(store, "corridor_pc", "seed: 0\n", 1.0, 0.2);
-  const int64_t id = store.begin_run({"rope", "seed: 0\n", "hash", 0, "", false, ""});
+  const int64_t id = store.begin_run({"rope", "seed: 0\n", "hash", 0, "", false, "", "", 0, ""});
   store.complete_run(id, {},
                      {{"task_success_rate", 0.5},
                       {"pre_mp_error_mean_mm", 3.0},
@@ -77,7 +77,8 @@ TEST(RunReport, TabulatesRunsWithTheSettingsTheyVary) {
   add_run(store, "sweep", "seed: 0\nevaluation: {seed: 2, trials: 4}\n", 0.5, 0.4);
   add_run(store, "other", "seed: 0\nnote: a\n", 0.25, 0.1);
   add_run(store, "other", "seed: 0\nnote: a|b\n", 0.25, 0.1);
-  const int64_t failed = store.begin_run({"sweep", "seed: 9\n", "hash", 0, "", false, ""});
+  const int64_t failed =
+      store.begin_run({"sweep", "seed: 9\n", "hash", 0, "", false, "", "", 0, ""});
   store.end_run(failed, "failed", "for the test");
 
   const auto runs = load_run_summaries(store, {});

@@ -19,7 +19,7 @@
 #include <vector>
 
 #include "context/autoencoder/conv_autoencoder.hpp"
-#include "context/autoencoder/worker_pool.hpp"
+#include "core/worker_pool.hpp"
 #include "nn/adam.hpp"
 #include "nn/buffer.hpp"
 

@@ -3,6 +3,7 @@
 
 #include <fmt/format.h>
 
+#include "core/thread_budget.hpp"
 #include "data/expert_collection.hpp"
 #include "envs/corridor_push/path_sampling.hpp"
 
@@ -155,15 +156,18 @@ DemonstrationSplit CorridorExpert::collect(Environment* environment, Rng& rng) {
   const ExpertCollection wanted{params_.train, params_.validation,
                                 (params_.train + params_.validation) * params_.max_attempts_factor,
                                 "corridor_expert"};
-  return collect_expert_demonstrations(wanted, [&] {
-    const Scenario scenario = environment->sample_scenario(rng);
-    Demonstration demo = demonstrate(*environment, scenario, params_.images, &rng);
-    const Outcome outcome = environment->outcome();
-    if (!outcome.success) {
-      throw std::runtime_error(scenario_json(scenario) + ": " + outcome.failure);
-    }
-    return demo;
-  });
+  EnvironmentCopies environments(*environment, parallel_workers(wanted.max_attempts));
+  return collect_expert_demonstrations(
+      wanted, rng, environments.size(), [&](Rng& attempt_rng, int worker) {
+        Environment& env = environments[worker];
+        const Scenario scenario = env.sample_scenario(attempt_rng);
+        Demonstration demo = demonstrate(env, scenario, params_.images, &attempt_rng);
+        const Outcome outcome = env.outcome();
+        if (!outcome.success) {
+          throw std::runtime_error(scenario_json(scenario) + ": " + outcome.failure);
+        }
+        return demo;
+      });
 }
 
 }  // namespace corrmp

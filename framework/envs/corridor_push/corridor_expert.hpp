@@ -56,8 +56,9 @@ class CorridorExpert : public DemonstrationSource {
   std::string environment_type() const override { return "corridor_push"; }
   bool records_images() const override { return params_.images; }
   bool can_demonstrate() const override { return true; }
-  // 5: the first per-source version (the pipeline's global key was at v4).
-  std::string version() const override { return "5"; }
+  // 5: the first per-source version (the pipeline's global key was at v4);
+  // 6: every attempt draws from its own stream (parallel collection).
+  std::string version() const override { return "6"; }
   // At the expert's nominal tempo (the evaluation's reference).
   Demonstration demonstrate(Environment& environment, const Scenario& scenario,
                             bool with_images) override;

@@ -31,6 +31,10 @@ CorridorPush::CorridorPush(const CorridorPushParams& params)
 
 CorridorPush::~CorridorPush() = default;
 
+std::unique_ptr<Environment> CorridorPush::clone() const {
+  return std::make_unique<CorridorPush>(params_);
+}
+
 TaskReport CorridorPush::report() const {
   TaskReport report;
   report.trajectory_columns = {"x", "y", "z"};

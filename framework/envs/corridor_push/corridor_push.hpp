@@ -24,6 +24,7 @@ class CorridorPush : public Environment {
   explicit CorridorPush(const CorridorPushParams& params);
   ~CorridorPush() override;
 
+  std::unique_ptr<Environment> clone() const override;
   TaskReport report() const override;
   Scenario sample_scenario(Rng& rng) const override;
   void reset(const Scenario& scenario) override;

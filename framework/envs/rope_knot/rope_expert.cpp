@@ -3,6 +3,7 @@
 
 #include <fmt/format.h>
 
+#include "core/thread_budget.hpp"
 #include "data/expert_collection.hpp"
 #include "envs/rope_knot/rope_knot_script.hpp"
 
@@ -87,18 +88,21 @@ DemonstrationSplit RopeExpert::collect(Environment* environment, Rng& rng) {
   const ExpertCollection wanted{params_.train, params_.validation,
                                 (params_.train + params_.validation) * params_.max_attempts_factor,
                                 "rope_expert"};
-  return collect_expert_demonstrations(wanted, [&] {
-    // Both draws every time, so the scenarios do not depend on the share.
-    const bool nominal = rng.uniform() < params_.no_correction_share;
-    const Scenario drawn = environment->sample_scenario(rng);
-    const Scenario scenario = nominal ? Scenario{} : drawn;
-    Demonstration demo = demonstrate(*environment, scenario, params_.images);
-    const Outcome outcome = environment->outcome();
-    if (!outcome.success) {
-      throw std::runtime_error(scenario_json(scenario) + ": " + outcome.failure);
-    }
-    return demo;
-  });
+  EnvironmentCopies environments(*environment, parallel_workers(wanted.max_attempts));
+  return collect_expert_demonstrations(
+      wanted, rng, environments.size(), [&](Rng& attempt_rng, int worker) {
+        Environment& env = environments[worker];
+        // Both draws every time, so the scenarios do not depend on the share.
+        const bool nominal = attempt_rng.uniform() < params_.no_correction_share;
+        const Scenario drawn = env.sample_scenario(attempt_rng);
+        const Scenario scenario = nominal ? Scenario{} : drawn;
+        Demonstration demo = demonstrate(env, scenario, params_.images);
+        const Outcome outcome = env.outcome();
+        if (!outcome.success) {
+          throw std::runtime_error(scenario_json(scenario) + ": " + outcome.failure);
+        }
+        return demo;
+      });
 }
 
 }  // namespace corrmp

@@ -53,6 +53,8 @@ class RopeExpert : public DemonstrationSource {
   bool can_demonstrate() const override { return true; }
   Demonstration demonstrate(Environment& environment, const Scenario& scenario,
                             bool with_images) override;
+  // 2: every attempt draws from its own stream (parallel collection).
+  std::string version() const override { return "2"; }
 
  private:
   RopeExpertParams params_;

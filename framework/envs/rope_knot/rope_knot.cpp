@@ -49,6 +49,8 @@ RopeKnot::RopeKnot(const RopeKnotEnvironmentParams& params)
 
 RopeKnot::~RopeKnot() = default;
 
+std::unique_ptr<Environment> RopeKnot::clone() const { return std::make_unique<RopeKnot>(params_); }
+
 TaskReport RopeKnot::report() const {
   TaskReport report;
   report.trajectory_columns = {"left_x",  "left_y",  "left_z",  "left_grip",

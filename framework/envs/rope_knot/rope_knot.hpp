@@ -55,6 +55,7 @@ class RopeKnot : public Environment {
   explicit RopeKnot(const RopeKnotEnvironmentParams& params);
   ~RopeKnot() override;
 
+  std::unique_ptr<Environment> clone() const override;
   TaskReport report() const override;
   Scenario sample_scenario(Rng& rng) const override;
   void reset(const Scenario& scenario) override;

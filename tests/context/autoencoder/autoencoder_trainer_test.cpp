@@ -6,13 +6,11 @@
 #include <gtest/gtest.h>
 
 #include <Eigen/Dense>
-#include <atomic>
 #include <set>
 #include <stdexcept>
 
 #include "context/autoencoder/autoencoder_images.hpp"
 #include "context/autoencoder/data_parallel_trainer.hpp"
-#include "context/autoencoder/worker_pool.hpp"
 #include "synthetic_squares.hpp"
 
 namespace corrmp {
@@ -183,24 +181,6 @@ TEST(AutoencoderTrainer, SplitIsThePapers360And40) {
   Rng again(9);
   EXPECT_EQ(split_train_test(400, 0.1, again).test, split.test);
   EXPECT_THROW(split_train_test(10, 1.5, rng), std::invalid_argument);
-}
-
-TEST(AutoencoderWorkerPool, RunsEveryIndexOnceAndRethrows) {
-  WorkerPool pool(3);
-  ASSERT_EQ(pool.size(), 3);
-  for (int round = 0; round < 50; ++round) {
-    std::atomic<int> calls[3] = {0, 0, 0};
-    pool.run([&](int i) { ++calls[i]; });
-    for (auto& c : calls) ASSERT_EQ(c.load(), 1);
-  }
-  EXPECT_THROW(pool.run([](int i) {
-    if (i == 2) throw std::runtime_error("worker 2 failed");
-  }),
-               std::runtime_error);
-  std::atomic<int> after{0};
-  pool.run([&](int) { ++after; });  // still usable after an exception
-  EXPECT_EQ(after.load(), 3);
-  EXPECT_THROW(WorkerPool(0), std::invalid_argument);
 }
 
 }  // namespace

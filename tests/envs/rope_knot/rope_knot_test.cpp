@@ -1,11 +1,16 @@
 // Tests of the rope_knot environment and its expert as the framework sees
 // them: the correction labels, the expert's segments (a relative cor-MP, the
 // whole-skill recording with the critical points' spans), replaying the
-// expert through the environment, the camera's model and determinism.
+// expert through the environment, the camera's model, determinism and
+// parallel collection.
 #include "envs/rope_knot/rope_knot.hpp"
 
 #include <gtest/gtest.h>
 
+#include <opencv2/core.hpp>
+#include <set>
+
+#include "core/thread_budget.hpp"
 #include "envs/rope_knot/rope_expert.hpp"
 #include "envs/rope_knot/rope_knot_script.hpp"
 
@@ -104,6 +109,47 @@ TEST(RopeKnot, ATrialIsDeterministic) {
   }
   EXPECT_EQ(failures[0], failures[1]);
   EXPECT_EQ(runs[0], runs[1]);  // bit for bit
+}
+
+// Parallel collection (issue 10): the same split, images included, for any
+// thread budget; each thread demonstrates in its own clone.
+TEST(RopeExpert, CollectsTheSameDemonstrationsWhateverTheThreadBudget) {
+  RopeExpertParams params;
+  params.train = 3;
+  params.validation = 1;
+  params.images = true;
+  std::vector<DemonstrationSplit> splits;
+  const int saved = thread_budget();
+  for (int budget : {1, 2}) {
+    set_thread_budget(budget);
+    RopeKnot env{RopeKnotEnvironmentParams{}};
+    Rng rng(4);
+    splits.push_back(RopeExpert{params}.collect(&env, rng));
+  }
+  set_thread_budget(saved);
+  ASSERT_EQ(splits[0].train.size(), 3u);
+  ASSERT_EQ(splits[1].train.size(), 3u);
+  ASSERT_EQ(splits[1].validation.size(), 1u);
+  std::vector<Demonstration> one = splits[0].train, two = splits[1].train;
+  one.push_back(splits[0].validation.at(0));
+  two.push_back(splits[1].validation.at(0));
+  for (size_t d = 0; d < one.size(); ++d) {
+    EXPECT_EQ(one[d].scenario, two[d].scenario);
+    EXPECT_EQ(one[d].decision, two[d].decision);
+    for (size_t s = 0; s < one[d].segments.size(); ++s) {
+      EXPECT_EQ(one[d].segments[s].y, two[d].segments[s].y);
+      EXPECT_EQ(one[d].segments[s].start.state, two[d].segments[s].start.state);
+      const cv::Mat& a = one[d].segments[s].start.rgb;
+      const cv::Mat& b = two[d].segments[s].start.rgb;
+      ASSERT_EQ(a.empty(), b.empty());
+      if (!a.empty()) {
+        EXPECT_EQ(cv::norm(a, b, cv::NORM_INF), 0.0);
+      }
+    }
+  }
+  std::set<std::string> scenarios;
+  for (const Demonstration& demo : one) scenarios.insert(demo.scenario);
+  EXPECT_GT(scenarios.size(), 1u);
 }
 
 TEST(RopeKnot, ABrokenTrajectoryIsAFailedTrialNotACrash) {

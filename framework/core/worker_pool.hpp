@@ -1,6 +1,7 @@
-// A fixed set of worker threads for the data-parallel autoencoder training
-// (autoencoder_trainer.hpp), so that both cores work on each minibatch of the paper's 70-epoch
-// training (Section III "Learning the Context") without creating threads per step.
+// A fixed set of worker threads for steps repeated many times, such as the minibatches of the
+// data-parallel autoencoder training (context/autoencoder/data_parallel_trainer.hpp, paper
+// Section III "Learning the Context"), without creating threads per step. For a few long
+// independent tasks, parallel_for (core/thread_budget.hpp) is simpler.
 //
 // run(task) calls task(i) once for each i in [0, size()): i = 0 on the calling thread, the
 // others on the pool's threads, and returns when all calls have finished. Which thread runs

@@ -1,5 +1,5 @@
 // Worker threads for data-parallel training (worker_pool.hpp).
-#include "context/autoencoder/worker_pool.hpp"
+#include "core/worker_pool.hpp"
 
 #include <stdexcept>
 

@@ -1,0 +1,47 @@
+// The process's thread budget and a parallel loop over independent tasks (issue 10: independent
+// networks trained concurrently, demonstrations collected in parallel). The budget is how many
+// threads the parallel stages of this process may keep busy at once: the cores of the machine
+// by default, fewer when several runs share them (run_experiment -j).
+//
+// parallel_for(count, task) calls task(i) once for each i in [0, count) on up to
+// min(count, thread_budget()) threads, the calling thread among them, and returns when every
+// started task has finished. Tasks start in index order (each thread takes the next index when
+// it is free), so the results are the same for every budget as long as each task depends only on
+// its index. Errors are deterministic too:
+//   - after a task throws, no task of a higher index starts; when all started tasks have
+//     finished, the exception of the lowest index is rethrown (the one a sequential loop would
+//     have thrown);
+//   - each thread checks for Ctrl-C (core/interrupt.hpp) before it starts a task; once a signal
+//     arrived no further task starts, and Interrupted is thrown after the running ones finished
+//     (unless a task threw, whose exception wins).
+// With a budget of 1, or a single task, the tasks run inline on the calling thread. A
+// parallel_for inside a task of another one runs inline as well, so nested loops never start
+// more threads than the budget.
+#pragma once
+
+#include <functional>
+
+namespace corrmp {
+
+// Sets the budget (n >= 1, else std::invalid_argument). Call it before the parallel stages
+// start; loops already running keep their threads.
+void set_thread_budget(int n);
+// The budget: set_thread_budget's value, by default std::thread::hardware_concurrency() (at
+// least 1).
+int thread_budget();
+
+// The number of threads parallel_for would use for `count` tasks from the calling thread:
+// min(count, thread_budget()), 1 inside another loop's task, 0 for no tasks.
+int parallel_workers(int count);
+
+// Runs task(index) for index in [0, count) as described above.
+void parallel_for(int count, const std::function<void(int index)>& task);
+
+// Like parallel_for, on at most `max_workers` threads, also passing the worker (in
+// [0, min(max_workers, parallel_workers(count)))) that runs the task: one worker runs its tasks
+// one after another, so per-worker resources (an environment) need no lock. Which worker runs
+// which index depends on timing: results must not depend on `worker`.
+void parallel_for_with_workers(int count, int max_workers,
+                               const std::function<void(int index, int worker)>& task);
+
+}  // namespace corrmp

@@ -1,0 +1,30 @@
+// Cells of the report tables (run, comparison and paper-reproduction reports):
+// escaping for Markdown and CSV and the printed form of numbers, means with
+// their confidence intervals and pooled proportions.
+#pragma once
+
+#include <string>
+
+#include "stats/mean_interval.hpp"
+#include "stats/wilson_interval.hpp"
+
+namespace corrmp {
+
+// Text inside a Markdown table cell: a '|' would end the cell.
+std::string markdown_cell(const std::string& text);
+// A CSV field, quoted when it holds a comma, quote or line break.
+std::string csv_cell(const std::string& text);
+
+// A number with three decimals (four significant digits from 1000 on); "-"
+// for NaN.
+std::string report_number(double value);
+// A CSV number at full precision; empty for NaN.
+std::string csv_number(double value);
+
+// "0.960 ± 0.099" (mean ± half-width of the interval); "0.700 (1 run, no
+// interval)" with one run; "-" with none.
+std::string mean_plus_minus(const MeanInterval& m);
+// "72 of 75 (96.0%, 95% CI 89.0-98.6%)" (Wilson); "no trials" without any.
+std::string pooled_success_text(const ProportionInterval& p);
+
+}  // namespace corrmp

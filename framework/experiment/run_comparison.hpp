@@ -1,0 +1,72 @@
+// Comparison of groups of recorded runs (issue 10, results across seeds): runs
+// grouped by experiment or by setting values (a sweep's axes), each group's
+// main metrics as the mean across its runs (seeds) with a 95% Student t
+// interval and its pooled task success with a Wilson interval, then the
+// difference in task success between groups: Fisher's exact test on the
+// trials pooled across seeds, and the difference of means across seeds with
+// Welch's interval. Printed as Markdown or CSV.
+#pragma once
+
+#include <cstdint>
+#include <map>
+#include <stdexcept>
+#include <string>
+#include <vector>
+
+#include "experiment/run_summaries.hpp"
+#include "stats/mean_interval.hpp"
+#include "stats/wilson_interval.hpp"
+
+namespace corrmp {
+
+// A comparison that cannot be made as asked (no runs, an unknown baseline).
+class ComparisonError : public std::runtime_error {
+ public:
+  using std::runtime_error::runtime_error;
+};
+
+struct ComparisonOptions {
+  // Setting keys whose values make the groups (run_setting: sweep axes, then
+  // the resolved config); empty: by experiment.
+  std::vector<std::string> group_by;
+  std::vector<std::string> extra_metrics;  // more metrics, by name
+  std::string baseline;                    // a group compared with every other; empty: every pair
+};
+
+struct RunGroup {
+  std::string name;  // the experiment, or "key=value, ..." of the group_by keys
+  std::vector<int64_t> runs;
+  int trials = 0;
+  ProportionInterval pooled_success;                   // the trials of all the runs together
+  std::map<std::string, std::vector<double>> samples;  // per metric, one per run having it
+  std::map<std::string, MeanInterval> metrics;         // across runs
+};
+
+// Task success of `group` against `versus` (group minus versus).
+struct SuccessDifference {
+  std::string group, versus;
+  ProportionInterval group_pooled, versus_pooled;
+  double pooled_difference = 0.0;   // of the pooled rates
+  double fisher_p = 0.0;            // two-sided, on the pooled 2x2 table
+  DifferenceInterval across_seeds;  // of the mean task_success_rate (Welch)
+};
+
+struct RunComparison {
+  std::string grouping;              // "experiment" or the group_by keys
+  std::vector<std::string> metrics;  // the metric columns, in order
+  std::vector<RunGroup> groups;      // in the order of their first run
+  std::vector<SuccessDifference> differences;
+};
+
+// Throws ComparisonError without runs or when the baseline is not a group.
+RunComparison compare_runs(const std::vector<RunSummary>& runs, const ComparisonOptions& options);
+
+// The grouping key of a run: its experiment, or the group_by values.
+std::string group_name(const RunSummary& run, const std::vector<std::string>& group_by);
+
+std::string comparison_markdown(const RunComparison& comparison);
+// One row per group metric (kind "mean"), per group's pooled success (kind
+// "pooled_success") and per difference (kind "difference"); see the header.
+std::string comparison_csv(const RunComparison& comparison);
+
+}  // namespace corrmp

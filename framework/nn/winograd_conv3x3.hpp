@@ -1,0 +1,88 @@
+// Winograd convolution F(2x2, 3x3) (Lavin and Gray, "Fast Algorithms for Convolutional Neural
+// Networks", 2016) for the stride-1, padding-1, 3x3 layers of the autoencoder (paper, Section
+// "Learning the Context": the stride-1 convolutions and their transposed mirrors), which carry
+// most of its multiply-adds. It computes the same convolution as im2col + matrix product
+// (nn/conv2d.hpp, nn/conv_transpose2d.hpp) with 16 products per 2x2 output tile and channel pair
+// instead of 36, the sums being grouped differently (the results agree up to rounding).
+//
+// For channels c -> o with 3x3 kernels g_{o,c} (correlation, zero padding 1), an image is cut
+// into 2x2 output tiles; tile t reads the 4x4 input patch d_{c,t} whose top-left pixel is one
+// up and left of the tile's. With
+//   B^T = [1 0 -1 0; 0 1 1 0; 0 -1 1 0; 0 1 0 -1],  G = [1 0 0; .5 .5 .5; .5 -.5 .5; 0 0 1],
+//   A^T = [1 1 1 0; 0 1 -1 -1]
+// and, for each of the 16 entries xi of a 4x4 matrix,
+//   U_xi[o][c] = (G g_{o,c} G^T)_xi,  V_xi[c][t] = (B^T d_{c,t} B)_xi,  M_xi = U_xi V_xi,
+// output tile t of channel o is A^T M_{.,o,t} A + b_o (rows or columns past the image dropped).
+// Backward, with dM_{.,o,t} = A dY_{o,t} A^T (dY zero past the image):
+//   dU_xi = sum over tiles dM_xi V_xi^T,  dL/dg_{o,c} = G^T dU_{.,o,c} G,
+//   dV_xi = U_xi^T dM_xi,  dL/dx = sum over tiles of B dV_{.,c,t} B^T placed at the patches,
+// the adjoints of the forward steps. The 16 products run on chunks of whole images (tiles side by
+// side, like nn/im2col.hpp's chunks), so each is one matrix product per chunk.
+//
+// The weight matrix is read in either layer's layout (KernelLayout); a transposed convolution
+// with stride 1, padding 1 and no output padding is the convolution with the kernel flipped and
+// the channel roles exchanged: g_{o,c}[i][j] = W[c][o][2 - i][2 - j].
+#pragma once
+
+#include "nn/buffer.hpp"
+#include "nn/tensor.hpp"
+
+namespace corrmp::nn {
+
+enum class KernelLayout {
+  kConv,        ///< W is Cout x (Cin 3 3): g_{o,c}[i][j] = W[o][(c 3 + i) 3 + j] (nn/conv2d.hpp)
+  kTransposed,  ///< W is Cin x (Cout 3 3), flipped: g_{o,c}[i][j] = W[c][(o 3 + 2 - i) 3 + 2 - j]
+};
+
+template <class S>
+class WinogradConv3x3 {
+ public:
+  /// A stride-1, padding-1, 3x3 convolution from in_channels x height x width images to
+  /// out_channels x height x width images.
+  WinogradConv3x3(Index in_channels, Index out_channels, Index height, Index width,
+                  KernelLayout layout);
+
+  /// y = conv(x) + bias; x is N x (Cin H W), y is N x (Cout H W).
+  void forward(const S* weight, const S* bias, ConstMatRef<S> x, MatRef<S> y);
+
+  /// Accumulates dL/dW into weight_grad (the layout of weight) and dL/db into bias_grad, and
+  /// overwrites dx (N rows dx_stride apart) with dL/dx unless dx is null.
+  void backward(const S* weight, ConstMatRef<S> x, ConstMatRef<S> dy, S* weight_grad, S* bias_grad,
+                S* dx, Index dx_stride);
+
+ private:
+  static constexpr int kTerms = 16;  // entries of a 4x4 tile transform
+  // Scratch array k (room for (tile_rows + 1) (tile_cols + 1) values) of the transforms, k < 32.
+  S* scratch(Index k);
+  // Distance between the term matrices of a chunk (channels x columns each).
+  static Index term_stride(Index channels, Index columns);
+
+  // Where g_{o,c}[i][j] is in the weight matrix.
+  Index kernel_index(Index o, Index c, Index i, Index j) const;
+  // U_xi for every xi (kTerms matrices Cout x Cin).
+  void transform_weights(const S* weight);
+  // Images of the batch per chunk.
+  Index chunk_images(Index batch) const;
+  // V of `count` images (rows `stride` apart) into v_ (kTerms matrices Cin x count tiles).
+  void transform_inputs(const S* images, Index stride, Index count);
+  // dM of `count` output-gradient images into m_ (kTerms matrices Cout x count tiles).
+  void transform_output_grads(const S* images, Index stride, Index count);
+  // Writes A^T M A + b from m_ into `count` images.
+  void write_outputs(const S* bias, Index count, S* images, Index stride);
+  // Writes the sum of B dV B^T from v_ into `count` images.
+  void write_input_grads(Index count, S* images, Index stride);
+
+  Index in_channels_, out_channels_, height_, width_;
+  KernelLayout layout_;
+  Index tile_rows_, tile_cols_;  // ceil(H / 2), ceil(W / 2)
+  Buffer<S> u_;                  // U
+  Buffer<S> v_;                  // V, then dV, of one chunk (kTerms rows, term_stride apart)
+  Buffer<S> m_;                  // M or dM of one chunk (likewise)
+  Buffer<S> du_;                 // dU summed over the batch
+  Vec<S> rows_;                  // per-row scratch of the transforms
+};
+
+extern template class WinogradConv3x3<float>;
+extern template class WinogradConv3x3<double>;
+
+}  // namespace corrmp::nn

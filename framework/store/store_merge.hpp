@@ -1,0 +1,24 @@
+// Merging result databases: the shards a Slurm job array writes (one per task)
+// into one. docs/sweeps.md, "Merging shards".
+#pragma once
+
+#include <string>
+#include <vector>
+
+#include "store/result_store.hpp"
+
+namespace corrmp {
+
+struct MergeCounts {
+  int added = 0;       // runs copied with their trials and metrics
+  int present = 0;     // runs the target already held (same uid)
+  int unfinished = 0;  // runs still 'running' in a shard: left for a later merge
+};
+
+// Copies every finished run of `shard` (with its trials and metrics) and its
+// sweeps into `target`, unless `target` already holds it: runs are matched by
+// their uid, so merging the same shard twice changes nothing. One transaction
+// per shard.
+MergeCounts merge_shard(ResultStore& target, const std::string& shard);
+
+}  // namespace corrmp

@@ -1,0 +1,39 @@
+// A sweep: the jobs of a multirun (the cross product of its axes over one or
+// more base configs), each one run of run_experiment with its own overrides.
+// docs/sweeps.md.
+#pragma once
+
+#include <string>
+#include <utility>
+#include <vector>
+
+namespace corrmp {
+
+// What each job asks of a cluster scheduler (Slurm): from the sweep file's
+// `slurm:` section, or the defaults.
+struct SlurmResources {
+  int cpus_per_task = 2;
+  std::string time = "01:00:00";  // Slurm's --time
+  std::string memory = "4G";      // Slurm's --mem
+  std::string partition;          // empty: the cluster's default
+};
+
+struct SweepJob {
+  int index = 0;
+  std::string config_path;  // the base config this job runs
+  // Every override in force for this job, in order: the sweep's fixed ones,
+  // then one per axis.
+  std::vector<std::string> overrides;
+  // The axis values that make this job (key, value as written), for the
+  // database and the reports.
+  std::vector<std::pair<std::string, std::string>> axes;
+};
+
+struct Sweep {
+  std::string id;    // unique: <name>-<UTC time>-<random hex>
+  std::string name;  // the sweep file's name, or the base config's experiment
+  std::vector<SweepJob> jobs;
+  SlurmResources slurm;
+};
+
+}  // namespace corrmp

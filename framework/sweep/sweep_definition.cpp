@@ -1,0 +1,169 @@
+// Sweeps from the command line and sweep files (sweep_definition.hpp).
+#include "sweep/sweep_definition.hpp"
+
+#include <fmt/format.h>
+
+#include <algorithm>
+#include <cctype>
+#include <ctime>
+#include <filesystem>
+#include <random>
+
+#include "core/config/config_loader.hpp"
+#include "core/config/config_reader.hpp"
+#include "sweep/sweep_axes.hpp"
+
+namespace corrmp {
+
+namespace fs = std::filesystem;
+
+namespace {
+
+// The `slurm:` section of a sweep file.
+struct SlurmSection {
+  SlurmResources resources;
+  template <class Fields>
+  void describe(Fields& f) {
+    f("cpus_per_task", resources.cpus_per_task, "CPUs of each array task (--cpus-per-task)",
+      in_range(1, 1024));
+    f("time", resources.time, "time limit of each task (--time), e.g. 01:00:00");
+    f("memory", resources.memory, "memory of each task (--mem), e.g. 4G");
+    f("partition", resources.partition, "partition (--partition); empty: the cluster's default");
+  }
+};
+
+// The `sweep:` section; axes and zip are read by hand (their keys are config paths).
+struct SweepSection {
+  std::string name;
+  std::vector<std::string> configs;
+  std::vector<std::string> overrides;
+  template <class Fields>
+  void describe(Fields& f) {
+    f("name", name, "the sweep's name", required());
+    f("configs", configs, "experiment configs (relative to this file), each crossed with the axes",
+      required());
+    f("overrides", overrides, "key.path=value overrides applied to every job");
+  }
+};
+
+std::string axis_text(const ConfigNode& value, const std::string& path) {
+  if (value.is_scalar()) return value.text();
+  if (value.is_sequence()) {
+    std::string joined;
+    for (const auto& item : value.items()) {
+      if (!item.is_scalar()) throw ConfigError(item.where(), path, "expected scalar values");
+      joined += (joined.empty() ? "" : ",") + item.text();
+    }
+    if (joined.empty()) throw ConfigError(value.where(), path, "the axis has no values");
+    return joined;
+  }
+  throw ConfigError(value.where(), path, "expected values: a list, a,b,c, range() or choice()");
+}
+
+std::vector<SweepAxis> read_axes(const ConfigNode& map, const std::string& path) {
+  if (!map.is_map()) throw ConfigError(map.where(), path, "expected a map of key.path: values");
+  std::vector<SweepAxis> axes;
+  for (const auto& entry : map.entries()) {
+    const std::string axis_path = path + "." + entry.key;
+    SweepAxis axis;
+    axis.key = entry.key;
+    axis.where = entry.value.where();
+    axis.values = parse_axis_values(axis_text(entry.value, axis_path), axis.where, axis_path);
+    axes.push_back(std::move(axis));
+  }
+  return axes;
+}
+
+// The name becomes part of file names and the sweep id.
+void check_name(const std::string& name, const SourceLocation& where) {
+  const bool valid =
+      !name.empty() && name[0] != '.' && name.size() <= 100 &&
+      std::all_of(name.begin(), name.end(), [](char c) {
+        return std::isalnum(static_cast<unsigned char>(c)) || c == '_' || c == '-' || c == '.';
+      });
+  if (!valid) {
+    throw ConfigError(
+        where, "sweep.name",
+        fmt::format("'{}' is not a valid name: use letters, digits, '_', '-', '.'", name));
+  }
+}
+
+}  // namespace
+
+bool is_sweep_file(const std::string& path) {
+  const ConfigNode root = ConfigNode::load_file(path);
+  return root.is_map() && root.find("sweep") != nullptr;
+}
+
+std::string new_sweep_id(const std::string& name) {
+  const std::time_t now = std::time(nullptr);
+  std::tm utc{};
+  gmtime_r(&now, &utc);
+  char stamp[32];
+  std::strftime(stamp, sizeof stamp, "%Y%m%dT%H%M%S", &utc);
+  std::random_device random;
+  return fmt::format("{}-{}-{:04x}", name, stamp, random() & 0xffffu);
+}
+
+Sweep define_sweep(const std::string& config_path, const std::vector<std::string>& assignments) {
+  Sweep sweep;
+  std::vector<std::string> configs{config_path};
+  std::vector<std::string> fixed;
+  std::vector<AxisGroup> groups;
+  if (is_sweep_file(config_path)) {
+    ConfigNode root = load_config_file(config_path);
+    for (const auto& entry : root.entries()) {
+      if (entry.key != "sweep") {
+        throw ConfigError(entry.value.where(), entry.key,
+                          "a sweep file holds only a `sweep:` section");
+      }
+    }
+    ConfigNode& section = *root.find("sweep");
+    ConfigReader reader(section, "sweep");
+    SweepSection read;
+    read.describe(reader);
+    reader.declare("axes");
+    reader.declare("zip");
+    SlurmSection slurm;
+    if (ConfigNode* node = section.find("slurm")) {
+      ConfigReader::read(*node, "sweep.slurm", slurm);
+    }
+    reader.declare("slurm");
+    reader.finish();
+    const fs::path base = fs::path(config_path).parent_path();
+    configs.clear();
+    for (const auto& config : read.configs) {
+      configs.push_back((fs::path(config).is_absolute() ? fs::path(config) : base / config)
+                            .lexically_normal()
+                            .string());
+    }
+    if (configs.empty()) {
+      throw ConfigError(section.find("configs")->where(), "sweep.configs", "no config to run");
+    }
+    fixed = read.overrides;
+    check_name(read.name, section.find("name")->where());
+    sweep.name = read.name;
+    sweep.slurm = slurm.resources;
+    if (const ConfigNode* axes = section.find("axes")) {
+      for (auto& axis : read_axes(*axes, "sweep.axes")) groups.push_back({std::move(axis)});
+    }
+    if (const ConfigNode* zip = section.find("zip")) {
+      AxisGroup group = read_axes(*zip, "sweep.zip");
+      if (!group.empty()) groups.push_back(std::move(group));
+    }
+  } else {
+    sweep.name = fs::path(config_path).stem().string();
+  }
+  for (const auto& assignment : assignments) {
+    if (is_sweep_assignment(assignment)) {
+      groups.push_back({parse_axis_assignment(assignment)});
+    } else {
+      fixed.push_back(assignment);
+    }
+  }
+  sweep.jobs = expand_jobs(configs, fixed, groups);
+  sweep.id = new_sweep_id(sweep.name);
+  return sweep;
+}
+
+}  // namespace corrmp

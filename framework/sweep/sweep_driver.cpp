@@ -1,0 +1,152 @@
+// Driving a multirun (sweep_driver.hpp).
+#include "sweep/sweep_driver.hpp"
+
+#include <fmt/format.h>
+#include <spdlog/spdlog.h>
+
+#include <filesystem>
+#include <fstream>
+
+#include "core/config/config_error.hpp"
+#include "experiment/experiment.hpp"
+#include "store/store_merge.hpp"
+#include "sweep/local_sweep.hpp"
+#include "sweep/slurm_launcher.hpp"
+#include "sweep/sweep_manifest.hpp"
+#include "sweep/sweep_records.hpp"
+
+namespace corrmp {
+
+namespace fs = std::filesystem;
+
+namespace {
+
+std::string describe_axes(const SweepJob& job) {
+  std::string text;
+  for (const auto& [key, value] : job.axes) text += (text.empty() ? "" : " ") + key + "=" + value;
+  return text.empty() ? job.config_path : text;
+}
+
+// Writes the manifest, the array script and the folders its tasks write to.
+std::string write_slurm_files(const Sweep& sweep, const SweepDriverOptions& options,
+                              const fs::path& dir) {
+  fs::create_directories(dir / "shards");
+  fs::create_directories(dir / "logs");
+  SlurmPaths paths;
+  paths.run_experiment = options.executable;
+  paths.manifest = (dir / "manifest.yaml").string();
+  paths.shard_dir = (dir / "shards").string();
+  paths.out_dir = options.run.out_dir;
+  paths.log_dir = (dir / "logs").string();
+  write_manifest(paths.manifest, sweep);
+  const fs::path script = dir / "sweep.sbatch";
+  std::ofstream(script) << slurm_array_script(sweep, paths);
+  if (!fs::exists(script)) throw std::runtime_error("cannot write " + script.string());
+  return script.string();
+}
+
+int merge_shards_into(const fs::path& shard_dir, const std::string& db_path) {
+  ResultStore target(db_path);
+  MergeCounts total;
+  for (const auto& entry : fs::directory_iterator(shard_dir)) {
+    if (entry.path().extension() != ".sqlite") continue;
+    const MergeCounts counts = merge_shard(target, entry.path().string());
+    total.added += counts.added;
+    total.present += counts.present;
+    total.unfinished += counts.unfinished;
+  }
+  spdlog::info("merged into {}: {} runs added, {} already there, {} still running", db_path,
+               total.added, total.present, total.unfinished);
+  return 0;
+}
+
+int run_on_slurm(const Sweep& sweep, const SweepDriverOptions& options) {
+  const bool emit_only = !options.emit_dir.empty();
+  const fs::path dir =
+      emit_only ? fs::path(options.emit_dir) : fs::path(options.run.out_dir) / "sweeps" / sweep.id;
+  const std::string script = write_slurm_files(sweep, options, dir);
+  if (emit_only) {
+    fmt::print(
+        "wrote {} ({} array tasks); submit with: sbatch {}\nthen merge: run_experiment merge "
+        "{}/*.sqlite --db {}\n",
+        script, sweep.jobs.size(), script, (dir / "shards").string(), options.run.db_path);
+    return 0;
+  }
+  const SlurmSubmission submission = submit_slurm(script, options.wait);
+  fmt::print("sweep {}: submitted Slurm job array {} ({} tasks)\n", sweep.id, submission.job_id,
+             sweep.jobs.size());
+  if (!options.wait) {
+    fmt::print("when it has finished: run_experiment merge {}/*.sqlite --db {}\n",
+               (dir / "shards").string(), options.run.db_path);
+    return 0;
+  }
+  merge_shards_into(dir / "shards", options.run.db_path);
+  return submission.exit_code.value_or(1) == 0 ? 0 : 1;
+}
+
+}  // namespace
+
+void check_sweep_jobs(const Sweep& sweep, const Registries& registries) {
+  if (sweep.jobs.empty()) throw ConfigError("the sweep has no jobs");
+  for (const auto& job : sweep.jobs) {
+    try {
+      load_experiment(job.config_path, job.overrides, registries);
+    } catch (const ConfigError& e) {
+      throw ConfigError(
+          fmt::format("{} (sweep job {}: {})", e.what(), job.index, describe_axes(job)));
+    }
+  }
+}
+
+int drive_sweep(const Sweep& sweep, const SweepDriverOptions& options) {
+  if (options.launcher == "slurm" || !options.emit_dir.empty()) {
+    return run_on_slurm(sweep, options);
+  }
+  LocalSweepOptions local;
+  local.executable = options.executable;
+  local.db_path = options.run.db_path;
+  local.out_dir = options.run.out_dir;
+  local.use_cache = options.run.use_cache;
+  local.parallel_jobs = std::max(1, options.parallel_jobs);
+  local.threads_per_job = std::max(1, options.threads / local.parallel_jobs);
+  const SweepOutcome outcome = run_sweep_locally(sweep, local);
+  fmt::print(
+      "sweep {}: {} completed, {} failed, {} interrupted ({} completed before); "
+      "runs in {} (report --sweep {}), logs in {}\n",
+      sweep.id, outcome.completed, outcome.failed, outcome.interrupted, outcome.skipped,
+      options.run.db_path, sweep.id, outcome.directory);
+  if (outcome.interrupted > 0) {
+    fmt::print("resume with: run_experiment --resume {} --db {} --out {}\n", sweep.id,
+               options.run.db_path, options.run.out_dir);
+    return 130;
+  }
+  return outcome.failed > 0 ? 1 : 0;
+}
+
+int run_sweep_job(const std::string& manifest, int index, const RunOptions& options,
+                  const Registries& registries) {
+  const Sweep sweep = read_manifest(manifest);
+  if (index < 0 || index >= static_cast<int>(sweep.jobs.size())) {
+    throw ConfigError(
+        fmt::format("{}: no job {} (the sweep has {})", manifest, index, sweep.jobs.size()));
+  }
+  const SweepJob& job = sweep.jobs[static_cast<size_t>(index)];
+  {
+    ResultStore store(options.db_path);
+    record_sweep(store, sweep);
+    if (completed_jobs(store, sweep.id).count(index) > 0) {
+      spdlog::info("sweep {} job {} has a completed run already: nothing to do", sweep.id, index);
+      return 0;
+    }
+  }
+  Experiment experiment = load_experiment(job.config_path, job.overrides, registries);
+  RunOptions run = options;
+  run.sweep_id = sweep.id;
+  run.job_index = index;
+  run.axes_json = axes_json(job);
+  const RunResult result = run_pipeline(experiment, run);
+  if (result.status == "completed") return 0;
+  return result.status == "interrupted" ? 130 : 1;
+}
+
+}  // namespace corrmp

@@ -1,0 +1,143 @@
+// Tests of the report tool's --compare and --reproduction: the files it
+// writes, what it prints, and one-line usage errors with exit code 2
+// (docs/architecture.md, "Command line").
+#include <gtest/gtest.h>
+#include <sys/wait.h>
+
+#include <filesystem>
+#include <fstream>
+#include <sstream>
+
+#include "config/test_files.hpp"
+#include "recorded_runs.hpp"
+
+namespace corrmp {
+namespace {
+
+using testing::RunSpec;
+using testing::TempDir;
+
+struct ToolOutcome {
+  int exit_code = -1;
+  std::string out, err;
+};
+
+std::string read(const std::string& path) {
+  std::stringstream text;
+  text << std::ifstream(path).rdbuf();
+  return text.str();
+}
+
+ToolOutcome report_tool(const TempDir& dir, const std::string& args) {
+  const std::string out = dir.file("out.txt"), err = dir.file("err.txt");
+  const std::string command = std::string(REPORT_BIN) + " --db " + dir.file("r.sqlite") + " " +
+                              args + " >" + out + " 2>" + err;
+  const int status = std::system(command.c_str());
+  return {WIFEXITED(status) ? WEXITSTATUS(status) : -1, read(out), read(err)};
+}
+
+// Sweep "s1": two corridor_pc runs (4 and 3 of 4) and two corridor_mono runs
+// (1 and 2 of 4); one corridor_pc run outside it.
+void record_runs(const TempDir& dir) {
+  ResultStore store(dir.file("r.sqlite"));
+  testing::add_sweep(store, "s1", "paper", 4);
+  int job = 0;
+  for (const auto& [experiment, successes] : std::vector<std::pair<std::string, int>>{
+           {"corridor_pc", 4}, {"corridor_pc", 3}, {"corridor_mono", 1}, {"corridor_mono", 2}}) {
+    RunSpec spec;
+    spec.experiment = experiment;
+    spec.sweep_id = "s1";
+    spec.job_index = job;
+    spec.axes = "{\"seed\":\"" + std::to_string(job++) + "\"}";
+    spec.trials = testing::trials_of("push", 4, successes);
+    spec.metrics = {{"task_success_rate", successes / 4.0}, {"cor_mp_error_mean_cm", 1.0}};
+    testing::record_run(store, spec);
+  }
+  RunSpec outside;
+  outside.experiment = "corridor_pc";
+  outside.trials = testing::trials_of("push", 4, 0);
+  outside.metrics = {{"task_success_rate", 0.0}};
+  testing::record_run(store, outside);
+}
+
+TEST(ReportTool, ComparesTheRunsOfASweep) {
+  TempDir dir;
+  record_runs(dir);
+  const ToolOutcome csv = report_tool(dir, "--compare --sweep s1 --csv --baseline corridor_mono");
+  ASSERT_EQ(csv.exit_code, 0) << csv.err;
+  // 7 of 8 against 3 of 8: fisher.test gives 0.1189 (= 17 / 143).
+  EXPECT_NE(csv.out.find("\ndifference,corridor_pc,corridor_mono,task_success_rate,2,8,7,0.5,"),
+            std::string::npos)
+      << csv.out;
+  EXPECT_NE(csv.out.find(",8,3,0.11888111888111"), std::string::npos) << csv.out;
+  // The run outside the sweep is left out: 2 runs, 8 trials.
+  EXPECT_NE(csv.out.find("\npooled_success,corridor_pc,,task_success,2,8,7,0.875,"),
+            std::string::npos)
+      << csv.out;
+
+  const ToolOutcome files = report_tool(dir, "--compare --sweep s1 --out " + dir.file("cmp"));
+  ASSERT_EQ(files.exit_code, 0) << files.err;
+  EXPECT_NE(read(dir.file("cmp/compare.md")).find("| corridor_pc | 2 | 8 | 7 of 8"),
+            std::string::npos);
+  EXPECT_EQ(read(dir.file("cmp/compare.csv")).rfind("kind,group,versus,metric", 0), 0u);
+
+  const ToolOutcome by_seed = report_tool(dir, "--compare --sweep s1 --by seed");
+  ASSERT_EQ(by_seed.exit_code, 0) << by_seed.err;
+  EXPECT_NE(by_seed.out.find("| seed=3 | 1 | 4 | 2 of 4"), std::string::npos) << by_seed.out;
+}
+
+TEST(ReportTool, WritesTheReproductionReport) {
+  TempDir dir;
+  record_runs(dir);
+  const ToolOutcome ok = report_tool(dir, "--reproduction --sweep s1 --out " + dir.file("repro"));
+  ASSERT_EQ(ok.exit_code, 0) << ok.err;
+  const std::string md = read(dir.file("repro/report.md"));
+  EXPECT_NE(md.find("Sweep `s1` (paper"), std::string::npos) << md;
+  EXPECT_NE(md.find("| corridor_pc | 2 | 0, 1 | 8 |"), std::string::npos) << md;
+  EXPECT_NE(read(dir.file("repro/report.csv"))
+                .find("\ntable_1,all,corridor_pc,task_success_rate,2,0.875,"),
+            std::string::npos);
+}
+
+TEST(ReportTool, SaysWhatIsWrongWithACompareInOneLine) {
+  TempDir dir;
+  record_runs(dir);
+  const std::vector<std::pair<std::string, std::string>> cases = {
+      {"--compare --sweep nope",
+       "report: unknown sweep id 'nope' in '" + dir.file("r.sqlite") + "'\n"},
+      {"--compare --experiment corridor_ae corridor_pc",
+       "report: experiment 'corridor_ae' has no selected run\n"},
+      {"--compare --run 99", "report: run 99 is not among the selected runs\n"},
+      {"--compare --baseline corridor_ae",
+       "report: no group 'corridor_ae' to compare with (the groups: 'corridor_pc', "
+       "'corridor_mono')\n"},
+      {"--by seed", "report: --by and --baseline need --compare\n"},
+      {"--compare --reproduction", "report: --compare and --reproduction exclude each other\n"},
+      {"--reproduction --sweep s1", "report: --reproduction needs --out DIR\n"},
+      {"--out x", "report: --out needs --compare or --reproduction\n"},
+      {"--reproduction --run 42 --out " + dir.file("x"),
+       "report: run 42 is not among the selected runs\n"},
+  };
+  for (const auto& [args, message] : cases) {
+    const ToolOutcome bad = report_tool(dir, args);
+    EXPECT_EQ(bad.exit_code, 2) << args;
+    EXPECT_EQ(bad.err, message) << args;
+  }
+  // A database written before sweeps were recorded.
+  {
+    ResultStore store(dir.file("r.sqlite"));
+    store.execute(
+        "DROP INDEX IF EXISTS runs_sweep; ALTER TABLE runs DROP COLUMN axes; ALTER TABLE runs "
+        "DROP COLUMN job_index; ALTER TABLE runs DROP COLUMN sweep_id; DROP TABLE sweeps;");
+  }
+  const ToolOutcome old = report_tool(dir, "--compare --sweep s1");
+  EXPECT_EQ(old.exit_code, 2);
+  EXPECT_EQ(old.err, "report: '" + dir.file("r.sqlite") + "' records no sweeps (see --sweep)\n");
+  const ToolOutcome still = report_tool(dir, "--compare --csv");
+  EXPECT_EQ(still.exit_code, 0) << still.err;
+  EXPECT_NE(still.out.find("\npooled_success,corridor_pc,,task_success,3,12,7,"), std::string::npos)
+      << still.out;
+}
+
+}  // namespace
+}  // namespace corrmp

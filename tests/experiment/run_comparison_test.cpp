@@ -1,0 +1,229 @@
+// Tests of run comparisons: groups by experiment or by setting and sweep axis,
+// means with 95% Student t intervals across seeds, pooled success with Wilson
+// intervals, Fisher's exact test on the pooled trials and Welch's interval for
+// the difference of means, in Markdown and CSV; and the report tool's
+// --compare and its usage errors. Reference numbers from mpmath and R.
+#include "experiment/run_comparison.hpp"
+
+#include <gtest/gtest.h>
+#include <sys/wait.h>
+
+#include <cmath>
+#include <fstream>
+#include <sstream>
+
+#include "config/test_files.hpp"
+#include "recorded_runs.hpp"
+
+namespace corrmp {
+namespace {
+
+using testing::RunSpec;
+using testing::TempDir;
+using testing::trials_of;
+
+RunSpec corridor_run(const std::string& experiment, int successes, double cor_error) {
+  RunSpec spec;
+  spec.experiment = experiment;
+  spec.trials = trials_of("push", 4, successes);
+  spec.metrics = {{"task_success_rate", successes / 4.0},
+                  {"decision_match_rate", 1.0},
+                  {"cor_mp_error_mean_cm", cor_error},
+                  {"cor_mp_error_max_cm", 2 * cor_error},
+                  {"autoencoder_train_mse", 0.01}};
+  return spec;
+}
+
+// corridor_pc: 4, 3, 4 of 4 (11 of 12); corridor_mono: 2, 1, 2 of 4 (5 of 12).
+void record_pc_and_mono(ResultStore& store) {
+  for (int successes : {4, 3, 4})
+    testing::record_run(store, corridor_run("corridor_pc", successes, 0.8));
+  for (int successes : {2, 1, 2}) {
+    testing::record_run(store, corridor_run("corridor_mono", successes, 1.3));
+  }
+}
+
+// The CSV's rows as fields (the test's names hold no commas or quotes).
+std::vector<std::vector<std::string>> csv_rows(const std::string& csv) {
+  std::vector<std::vector<std::string>> rows;
+  std::stringstream lines(csv);
+  std::string line;
+  while (std::getline(lines, line)) {
+    std::vector<std::string> fields;
+    std::stringstream cells(line);
+    std::string cell;
+    while (std::getline(cells, cell, ',')) fields.push_back(cell);
+    if (!line.empty() && line.back() == ',') fields.push_back("");
+    rows.push_back(fields);
+  }
+  return rows;
+}
+
+// The CSV row of this kind, group and metric, by column name.
+std::map<std::string, std::string> csv_row(const std::string& csv, const std::string& kind,
+                                           const std::string& group, const std::string& metric) {
+  const auto rows = csv_rows(csv);
+  for (size_t r = 1; r < rows.size(); ++r) {
+    if (rows[r][0] == kind && rows[r][1] == group && rows[r][3] == metric) {
+      std::map<std::string, std::string> row;
+      for (size_t c = 0; c < rows[0].size(); ++c) row[rows[0][c]] = rows[r].at(c);
+      return row;
+    }
+  }
+  ADD_FAILURE() << "no row " << kind << "," << group << ",," << metric << " in\n" << csv;
+  return {};
+}
+
+TEST(RunComparison, GroupsByExperimentWithIntervalsAcrossSeeds) {
+  TempDir dir;
+  ResultStore store(dir.file("r.sqlite"));
+  record_pc_and_mono(store);
+  const RunComparison c = compare_runs(load_run_summaries(store, {}), {});
+  EXPECT_EQ(c.grouping, "experiment");
+  ASSERT_EQ(c.groups.size(), 2u);
+  EXPECT_EQ(c.groups[0].name, "corridor_pc");
+  EXPECT_EQ(c.groups[0].runs, (std::vector<int64_t>{1, 2, 3}));
+  EXPECT_EQ(c.groups[0].trials, 12);
+  EXPECT_EQ(c.metrics, (std::vector<std::string>{"task_success_rate", "decision_match_rate",
+                                                 "cor_mp_error_mean_cm", "cor_mp_error_max_cm"}));
+  const MeanInterval& success = c.groups[0].metrics.at("task_success_rate");
+  EXPECT_NEAR(success.mean, 11.0 / 12.0, 1e-12);
+  EXPECT_NEAR(success.half_width, 0.3585543941457885, 1e-10);  // t(0.975, 2) s / sqrt(3)
+  EXPECT_EQ(c.groups[0].pooled_success.successes, 11);
+  EXPECT_NEAR(c.groups[0].pooled_success.low, 0.6461200888588832, 1e-10);
+
+  ASSERT_EQ(c.differences.size(), 1u);
+  const SuccessDifference& d = c.differences[0];
+  EXPECT_EQ(d.group, "corridor_pc");
+  EXPECT_EQ(d.versus, "corridor_mono");
+  EXPECT_NEAR(d.pooled_difference, 0.5, 1e-12);
+  EXPECT_NEAR(d.fisher_p, 0.027190738995827163, 1e-12);  // fisher.test on [[11, 1], [5, 7]]
+  EXPECT_NEAR(d.across_seeds.difference, 0.5, 1e-12);
+  EXPECT_NEAR(d.across_seeds.half_width, 0.3272071935795928, 1e-10);  // Welch, 4 dof
+
+  const std::string md = comparison_markdown(c);
+  EXPECT_NE(md.find("Grouped by experiment: 2 groups, 6 runs."), std::string::npos) << md;
+  EXPECT_NE(md.find("| corridor_pc | 3 | 12 | 11 of 12 (91.7%, 95% CI 64.6-98.5%) | 0.917 ± "
+                    "0.359 | 1.000 ± 0.000 | 0.800 ± 0.000 | 1.600 ± 0.000 |"),
+            std::string::npos)
+      << md;
+  EXPECT_NE(md.find("Fisher's exact test, two-sided"), std::string::npos) << md;
+  EXPECT_NE(md.find("pooled across each group's runs (seeds)"), std::string::npos) << md;
+  EXPECT_NE(md.find("| corridor_pc | corridor_mono | 11 of 12 (91.7%) | 5 of 12 (41.7%) | +50.0 "
+                    "pp | 0.02719 | +0.500 [0.173, 0.827] |"),
+            std::string::npos)
+      << md;
+  EXPECT_NE(md.find("Runs: corridor_pc: 1, 2, 3. corridor_mono: 4, 5, 6."), std::string::npos)
+      << md;
+
+  const std::string csv = comparison_csv(c);
+  EXPECT_EQ(csv.substr(0, csv.find('\n')),
+            "kind,group,versus,metric,runs,trials,successes,mean,ci_low,ci_high,versus_trials,"
+            "versus_successes,fisher_p");
+  auto mono = csv_row(csv, "mean", "corridor_mono", "task_success_rate");
+  EXPECT_EQ(mono["runs"], "3");
+  EXPECT_NEAR(std::stod(mono["mean"]), 5.0 / 12.0, 1e-12);
+  EXPECT_NEAR(std::stod(mono["ci_low"]), 0.058112272520878194, 1e-10);
+  EXPECT_NEAR(std::stod(mono["ci_high"]), 0.7752210608124552, 1e-10);
+  auto pooled = csv_row(csv, "pooled_success", "corridor_mono", "task_success");
+  EXPECT_EQ(pooled["successes"], "5");
+  EXPECT_NEAR(std::stod(pooled["ci_high"]), 0.6804886874504503, 1e-10);
+  auto difference = csv_row(csv, "difference", "corridor_pc", "task_success_rate");
+  EXPECT_EQ(difference["versus"], "corridor_mono");
+  EXPECT_EQ(difference["versus_successes"], "5");
+  EXPECT_NEAR(std::stod(difference["fisher_p"]), 0.027190738995827163, 1e-12);
+  EXPECT_NEAR(std::stod(difference["ci_low"]), 0.5 - 0.3272071935795928, 1e-10);
+}
+
+TEST(RunComparison, ComparesEveryPairOrEachGroupWithTheBaseline) {
+  TempDir dir;
+  ResultStore store(dir.file("r.sqlite"));
+  record_pc_and_mono(store);
+  testing::record_run(store, corridor_run("corridor_ae", 4, 0.8));
+  const auto runs = load_run_summaries(store, {});
+  const RunComparison pairs = compare_runs(runs, {});
+  ASSERT_EQ(pairs.differences.size(), 3u);
+  EXPECT_EQ(pairs.differences[2].group, "corridor_mono");
+  EXPECT_EQ(pairs.differences[2].versus, "corridor_ae");
+
+  ComparisonOptions options;
+  options.baseline = "corridor_mono";
+  const RunComparison baseline = compare_runs(runs, options);
+  ASSERT_EQ(baseline.differences.size(), 2u);
+  EXPECT_EQ(baseline.differences[0].group, "corridor_pc");
+  EXPECT_EQ(baseline.differences[1].group, "corridor_ae");
+  for (const auto& d : baseline.differences) EXPECT_EQ(d.versus, "corridor_mono");
+  // corridor_ae has one run: no interval for it or for its difference of means.
+  const std::string md = comparison_markdown(baseline);
+  EXPECT_NE(md.find("| corridor_ae | 1 | 4 | 4 of 4 (100.0%, 95% CI 51.0-100.0%) | 1.000 (1 run, "
+                    "no interval) |"),
+            std::string::npos)
+      << md;
+  EXPECT_NE(md.find("| +0.583 (a group has 1 run, no interval) |"), std::string::npos) << md;
+  const auto row = csv_row(comparison_csv(baseline), "mean", "corridor_ae", "task_success_rate");
+  EXPECT_EQ(row.at("ci_low"), "");
+  EXPECT_EQ(row.at("mean"), "1");
+}
+
+TEST(RunComparison, GroupsBySweepAxesAndSettings) {
+  TempDir dir;
+  ResultStore store(dir.file("r.sqlite"));
+  testing::add_sweep(store, "s1", "policies", 4);
+  int job = 0;
+  for (const auto& [policy, successes] :
+       std::vector<std::pair<std::string, int>>{{"segmented_cnmp", 4},
+                                                {"segmented_cnmp", 4},
+                                                {"monolithic_cnmp", 1},
+                                                {"monolithic_cnmp", 2}}) {
+    RunSpec spec = corridor_run("corridor", successes, 1.0);
+    spec.config = "seed: " + std::to_string(job) + "\npolicy: {type: " + policy + "}\n";
+    spec.sweep_id = "s1";
+    spec.job_index = job++;
+    spec.axes = "{\"seed\":\"" + std::to_string(job) + "\",\"policy.type\":\"" + policy + "\"}";
+    testing::record_run(store, spec);
+  }
+  testing::record_run(store, corridor_run("corridor", 0, 1.0));  // outside the sweep
+
+  ReportQuery query;
+  query.sweeps = {"s1"};
+  const auto runs = load_run_summaries(store, query);
+  ASSERT_EQ(runs.size(), 4u);
+  EXPECT_EQ(runs[2].axes.at("policy.type"), "monolithic_cnmp");
+  EXPECT_EQ(runs[2].axes.at("seed"), "3");  // the axis value as written, not the config's 2
+
+  ComparisonOptions by_policy;
+  by_policy.group_by = {"policy.type"};
+  const RunComparison c = compare_runs(runs, by_policy);
+  EXPECT_EQ(c.grouping, "policy.type");
+  ASSERT_EQ(c.groups.size(), 2u);
+  EXPECT_EQ(c.groups[0].name, "policy.type=segmented_cnmp");
+  EXPECT_EQ(c.groups[1].name, "policy.type=monolithic_cnmp");
+  EXPECT_EQ(c.groups[1].pooled_success.successes, 3);
+  EXPECT_NEAR(c.differences[0].fisher_p, 1.0 / 39.0, 1e-12);  // 8 of 8 against 3 of 8
+
+  ComparisonOptions by_two;
+  by_two.group_by = {"experiment", "missing.key"};
+  const RunComparison unset = compare_runs(runs, by_two);
+  ASSERT_EQ(unset.groups.size(), 1u);
+  EXPECT_EQ(unset.groups[0].name, "experiment=corridor, missing.key=(unset)");
+}
+
+TEST(RunComparison, RefusesNoRunsAndAnUnknownBaseline) {
+  EXPECT_THROW(compare_runs({}, {}), ComparisonError);
+  TempDir dir;
+  ResultStore store(dir.file("r.sqlite"));
+  record_pc_and_mono(store);
+  ComparisonOptions options;
+  options.baseline = "corridor_ae";
+  try {
+    compare_runs(load_run_summaries(store, {}), options);
+    ADD_FAILURE() << "no error";
+  } catch (const ComparisonError& e) {
+    EXPECT_STREQ(e.what(),
+                 "no group 'corridor_ae' to compare with (the groups: 'corridor_pc', "
+                 "'corridor_mono')");
+  }
+}
+
+}  // namespace
+}  // namespace corrmp

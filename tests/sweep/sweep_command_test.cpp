@@ -1,0 +1,182 @@
+// run_experiment's sweeps end to end (docs/sweeps.md): bad axes refused before
+// anything is written, every job recorded with its sweep and axes, a sweep
+// killed with kill -9 resumed to exactly one completed run per job, and a
+// Slurm round trip through a real single-node Slurm (skipped where Slurm
+// cannot start).
+#include <fcntl.h>
+#include <gtest/gtest.h>
+#include <signal.h>
+#include <sys/wait.h>
+#include <unistd.h>
+
+#include <chrono>
+#include <filesystem>
+#include <fstream>
+#include <sstream>
+#include <thread>
+
+#include "config/test_files.hpp"
+#include "store/result_store.hpp"
+#include "support/local_slurm.hpp"
+
+namespace corrmp {
+namespace {
+
+using testing::TempDir;
+
+const std::string kTiny =
+    "experiment: {name: tiny}\nseed: 3\ndemonstrations: {type: curve_family, train: 4, "
+    "validation: 2, time_steps: 10}\npolicy:\n  type: segmented_cnmp\n  network: {width: 8}\n"
+    "  training: {updates: 200, validate_every: 50}\n";
+
+struct Outcome {
+  int exit_code;
+  std::string out;
+};
+
+Outcome run(const TempDir& dir, const std::string& args) {
+  const std::string log = dir.file("output.txt");
+  const std::string command = std::string(RUN_EXPERIMENT_BIN) + " " + args + " --db " +
+                              dir.file("r.sqlite") + " --out " + dir.file("runs") + " >" + log +
+                              " 2>&1";
+  const int status = std::system(command.c_str());
+  std::ifstream in(log);
+  std::stringstream text;
+  text << in.rdbuf();
+  return {WIFEXITED(status) ? WEXITSTATUS(status) : -1, text.str()};
+}
+
+TEST(SweepCommand, BadAxesExitTwoWithOneLineAndWriteNothing) {
+  TempDir dir;
+  const std::string config = dir.write("tiny.yaml", kTiny);
+  const std::vector<std::pair<std::string, std::string>> cases = {
+      {"policy.training.updatez=1,2", "policy.training.updatez: unknown key"},
+      {"seed=choice()", "choice() needs at least one value"},
+      {"seed=range(4,2)", "range(4, 2, 1) is empty"},
+      {"seed=range(0,x)", "'x' is not an integer"},
+      {"seed=1,,2", "empty value"},
+      {"policy.training.updates=100,-5", "sweep job 1: policy.training.updates=-5"},
+  };
+  for (const auto& [axis, expected] : cases) {
+    const Outcome outcome = run(dir, config + " -m '" + axis + "'");
+    EXPECT_EQ(outcome.exit_code, 2) << axis;
+    EXPECT_NE(outcome.out.find(expected), std::string::npos) << axis << ": " << outcome.out;
+    EXPECT_EQ(std::count(outcome.out.begin(), outcome.out.end(), '\n'), 1) << outcome.out;
+    EXPECT_FALSE(std::filesystem::exists(dir.file("r.sqlite"))) << axis;
+    EXPECT_FALSE(std::filesystem::exists(dir.file("runs"))) << axis;
+  }
+}
+
+TEST(SweepCommand, RecordsEveryJobWithItsSweepAndAxes) {
+  TempDir dir;
+  const std::string config = dir.write("tiny.yaml", kTiny);
+  const Outcome outcome = run(dir, config + " -m 'seed=range(0,2)' policy.network.width=4,8 -j 2");
+  ASSERT_EQ(outcome.exit_code, 0) << outcome.out;
+  ResultStore store(dir.file("r.sqlite"));
+  EXPECT_EQ(store.query_int("SELECT count(*) FROM runs WHERE status = 'completed'"), 4);
+  EXPECT_EQ(store.query_int("SELECT count(DISTINCT sweep_id) FROM runs"), 1);
+  EXPECT_EQ(store.query_int("SELECT jobs FROM sweeps"), 4);
+  EXPECT_EQ(store.query_text("SELECT axes FROM runs WHERE job_index = 3"),
+            R"({"seed":"1","policy.network.width":"8"})");
+  EXPECT_EQ(store.query_int("SELECT seed FROM runs WHERE job_index = 3"), 1);
+  // Resuming a finished sweep runs nothing more.
+  const std::string id = store.query_text("SELECT id FROM sweeps");
+  const Outcome again = run(dir, "--resume " + id);
+  EXPECT_EQ(again.exit_code, 0) << again.out;
+  EXPECT_NE(again.out.find("0 completed, 0 failed, 0 interrupted (4 completed before)"),
+            std::string::npos)
+      << again.out;
+  EXPECT_EQ(store.query_int("SELECT count(*) FROM runs"), 4);
+  EXPECT_EQ(run(dir, "--resume no-such-sweep").exit_code, 2);
+}
+
+TEST(SweepCommand, AKilledSweepResumesToExactlyOneCompletedRunPerJob) {
+  TempDir dir;
+  std::string slow = kTiny;
+  slow.replace(slow.find("updates: 200"), 12, "updates: 4000");
+  const std::string config = dir.write("tiny.yaml", slow);
+  const pid_t driver = fork();
+  if (driver == 0) {
+    const int null = ::open("/dev/null", O_WRONLY);
+    ::dup2(null, STDOUT_FILENO);
+    ::dup2(null, STDERR_FILENO);
+    execl(RUN_EXPERIMENT_BIN, RUN_EXPERIMENT_BIN, config.c_str(), "-m", "seed=range(0,6)", "-j",
+          "2", "--db", dir.file("r.sqlite").c_str(), "--out", dir.file("runs").c_str(),
+          static_cast<char*>(nullptr));
+    _exit(127);
+  }
+  // Kill the driver once a job has completed and others are under way.
+  const auto deadline = std::chrono::steady_clock::now() + std::chrono::seconds(60);
+  int64_t completed = 0;
+  while (completed == 0 && std::chrono::steady_clock::now() < deadline) {
+    std::this_thread::sleep_for(std::chrono::milliseconds(100));
+    if (!std::filesystem::exists(dir.file("r.sqlite"))) continue;
+    try {
+      ResultStore store(dir.file("r.sqlite"));
+      completed = store.query_int("SELECT count(*) FROM runs WHERE status = 'completed'");
+    } catch (const StoreError&) {
+    }
+  }
+  ASSERT_GT(completed, 0);
+  ::kill(driver, SIGKILL);
+  ::waitpid(driver, nullptr, 0);
+  std::this_thread::sleep_for(std::chrono::milliseconds(300));  // its jobs die with it
+
+  std::string id;
+  {
+    ResultStore store(dir.file("r.sqlite"));
+    id = store.query_text("SELECT id FROM sweeps");
+    EXPECT_LT(store.query_int("SELECT count(*) FROM runs WHERE status = 'completed'"), 6);
+  }
+  const Outcome resumed = run(dir, "--resume " + id + " -j 2");
+  ASSERT_EQ(resumed.exit_code, 0) << resumed.out;
+  ResultStore store(dir.file("r.sqlite"));
+  EXPECT_EQ(store.query_int("SELECT count(*) FROM runs WHERE status = 'completed'"), 6);
+  EXPECT_EQ(store.query_int("SELECT count(DISTINCT job_index) FROM runs WHERE status = "
+                            "'completed'"),
+            6);
+  EXPECT_EQ(store.query_int("SELECT count(*) FROM runs WHERE status = 'running'"), 0);
+}
+
+TEST(SweepCommand, RunsOnARealSlurmAndMergesTheShardsOnce) {
+  TempDir dir;
+  testing::LocalSlurm slurm(dir.file("slurm"));
+  if (!slurm.running()) {
+    if (slurm.unavailable()) GTEST_SKIP() << slurm.reason();
+    FAIL() << slurm.reason();
+  }
+  const std::string config = dir.write("tiny.yaml", kTiny);
+  const Outcome outcome = run(dir, config + " -m seed=0,1 --launcher slurm --wait --threads 1");
+  ASSERT_EQ(outcome.exit_code, 0) << outcome.out;
+  ResultStore store(dir.file("r.sqlite"));
+  EXPECT_EQ(store.query_int("SELECT count(*) FROM runs WHERE status = 'completed'"), 2);
+  EXPECT_EQ(store.query_int("SELECT count(*) FROM sweeps"), 1);
+  const std::string id = store.query_text("SELECT id FROM sweeps");
+  const std::string shards = dir.file("runs/sweeps/" + id + "/shards");
+  EXPECT_TRUE(std::filesystem::exists(shards + "/job-0.sqlite"));
+  EXPECT_TRUE(std::filesystem::exists(shards + "/job-1.sqlite"));
+  // Merging again changes nothing.
+  const std::string merge = std::string(RUN_EXPERIMENT_BIN) + " merge " + shards +
+                            "/job-0.sqlite " + shards + "/job-1.sqlite --db " +
+                            dir.file("r.sqlite") + " > /dev/null";
+  EXPECT_EQ(std::system(merge.c_str()), 0);
+  EXPECT_EQ(store.query_int("SELECT count(*) FROM runs"), 2);
+  EXPECT_EQ(store.query_int("SELECT count(*) FROM trials"),
+            store.query_int("SELECT count(*) FROM trials WHERE run_id IN (SELECT id FROM runs)"));
+}
+
+TEST(SweepCommand, EmitsTheSlurmFilesWithoutSubmitting) {
+  TempDir dir;
+  const std::string config = dir.write("tiny.yaml", kTiny);
+  const Outcome outcome = run(dir, config + " -m seed=0,1,2 --emit slurm " + dir.file("emit"));
+  ASSERT_EQ(outcome.exit_code, 0) << outcome.out;
+  std::ifstream script(dir.file("emit/sweep.sbatch"));
+  std::stringstream text;
+  text << script.rdbuf();
+  EXPECT_NE(text.str().find("#SBATCH --array=0-2"), std::string::npos) << text.str();
+  EXPECT_TRUE(std::filesystem::exists(dir.file("emit/manifest.yaml")));
+  EXPECT_FALSE(std::filesystem::exists(dir.file("r.sqlite")));
+}
+
+}  // namespace
+}  // namespace corrmp
