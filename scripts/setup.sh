@@ -17,7 +17,7 @@ PACKAGES=(
   libgtest-dev libgmock-dev
   libbenchmark-dev
   clang-format
-  slurm-wlm munge  # the sweep tests' single-node Slurm (tests/support/local_slurm.sh)
+  slurm-wlm munge iproute2  # the sweep tests' single-node Slurm (tests/support/local_slurm.sh)
 )
 
 missing=()

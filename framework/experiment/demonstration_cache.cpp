@@ -10,6 +10,7 @@
 #include <opencv2/imgcodecs.hpp>
 #include <sstream>
 
+#include "core/atomic_file.hpp"
 #include "core/seeds.hpp"
 
 namespace corrmp {
@@ -192,10 +193,7 @@ void save_demonstrations(const std::string& path, const DemonstrationSplit& demo
   }
   w.pod(fnv1a64(w.data()));
   std::filesystem::create_directories(std::filesystem::path(path).parent_path());
-  // A name of this process's own, so concurrent runs never write one file.
-  const std::string temporary = fmt::format("{}.{}.tmp", path, getpid());
-  std::ofstream(temporary, std::ios::binary) << w.data();
-  std::filesystem::rename(temporary, path);
+  write_file_atomically(path, w.data());
 }
 
 std::optional<DemonstrationSplit> load_demonstrations(const std::string& path) {

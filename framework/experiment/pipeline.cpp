@@ -6,7 +6,9 @@
 
 #include <filesystem>
 #include <fstream>
+#include <optional>
 
+#include "core/file_lock.hpp"
 #include "core/interrupt.hpp"
 #include "core/json_writer.hpp"
 #include "core/logging.hpp"
@@ -75,6 +77,10 @@ std::string demonstrations_key(const Experiment& experiment) {
 DemonstrationSplit collect_or_reuse(Experiment& experiment, const fs::path& cache_dir,
                                     const std::string& key, bool use_cache, Rng& rng) {
   const fs::path cache = cache_dir / fmt::format("demonstrations-{}.bin", key);
+  // Concurrent runs (a sweep's jobs) wanting the same demonstrations: the
+  // first collects them, the others wait and reuse them.
+  std::optional<FileLock> lock;
+  if (!key.empty()) lock.emplace(cache.string() + ".lock");
   if (!key.empty() && use_cache) {
     try {
       if (auto cached = load_demonstrations(cache.string())) {

@@ -9,6 +9,7 @@
 #include <sstream>
 #include <stdexcept>
 
+#include "core/atomic_file.hpp"
 #include "core/json_writer.hpp"
 
 namespace corrmp {
@@ -70,14 +71,7 @@ Sweep parse_manifest(const std::string& text, const std::string& origin) {
 }
 
 void write_manifest(const std::string& path, const Sweep& sweep) {
-  const std::string temporary = path + ".tmp";
-  {
-    std::ofstream out(temporary, std::ios::trunc);
-    out << manifest_yaml(sweep);
-    out.flush();
-    if (!out) throw std::runtime_error(fmt::format("cannot write {}", temporary));
-  }
-  std::filesystem::rename(temporary, path);
+  write_file_atomically(path, manifest_yaml(sweep));
 }
 
 Sweep read_manifest(const std::string& path) {

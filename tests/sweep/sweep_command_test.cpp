@@ -138,6 +138,49 @@ TEST(SweepCommand, AKilledSweepResumesToExactlyOneCompletedRunPerJob) {
   EXPECT_EQ(store.query_int("SELECT count(*) FROM runs WHERE status = 'running'"), 0);
 }
 
+std::string read_text(const std::filesystem::path& path) {
+  std::ifstream in(path);
+  std::stringstream text;
+  text << in.rdbuf();
+  return text.str();
+}
+
+// Two jobs needing the same demonstrations at the same time: one collects them,
+// the other waits for its lock and reuses them; both evaluate the same trials.
+TEST(SweepCommand, ConcurrentJobsShareOneCacheEntry) {
+  TempDir dir;
+  const Outcome outcome =
+      run(dir, std::string(PROJECT_DIR) +
+                   "/configs/corridor_pc.yaml demonstrations.train=6 demonstrations.validation=3 "
+                   "policy.training.updates=100 policy.training.validate_every=50 "
+                   "evaluation.trials=2 -m policy.network.width=8,9 -j 2");
+  ASSERT_EQ(outcome.exit_code, 0) << outcome.out;
+  ResultStore store(dir.file("r.sqlite"));
+  int collected = 0, reused = 0;
+  for (int job = 0; job < 2; ++job) {
+    const std::string run_log = read_text(
+        store.query_text("SELECT out_dir FROM runs WHERE job_index = " + std::to_string(job)) +
+        "/log.txt");
+    if (run_log.find("reusing cached demonstrations") != std::string::npos) {
+      ++reused;
+    } else if (run_log.find("demonstrations: 9 in") != std::string::npos) {
+      ++collected;
+    }
+  }
+  EXPECT_EQ(collected, 1);
+  EXPECT_EQ(reused, 1);
+  int caches = 0;
+  for (const auto& entry : std::filesystem::directory_iterator(dir.file("runs/cache"))) {
+    caches += entry.path().extension() == ".bin";
+    EXPECT_EQ(entry.path().extension() == ".tmp", false) << entry.path();
+  }
+  EXPECT_EQ(caches, 1);
+  EXPECT_EQ(store.query_text("SELECT group_concat(scenario, '|') FROM trials WHERE run_id = "
+                             "(SELECT id FROM runs WHERE job_index = 0)"),
+            store.query_text("SELECT group_concat(scenario, '|') FROM trials WHERE run_id = "
+                             "(SELECT id FROM runs WHERE job_index = 1)"));
+}
+
 TEST(SweepCommand, RunsOnARealSlurmAndMergesTheShardsOnce) {
   TempDir dir;
   testing::LocalSlurm slurm(dir.file("slurm"));
