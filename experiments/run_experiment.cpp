@@ -10,6 +10,7 @@
 #include <spdlog/spdlog.h>
 #include <CLI/CLI.hpp>
 
+#include <cstdlib>
 #include <filesystem>
 #include <iostream>
 #include <thread>
@@ -134,6 +135,9 @@ int main(int argc, char** argv) {
   corrmp::setup_logging(quiet);
   options.use_cache = !no_cache;
   corrmp::set_thread_budget(threads);
+  // Mesa's llvmpipe rasteriser (the head camera) starts one thread per core
+  // unless told otherwise: keep it within this run's share of the cores.
+  ::setenv("LP_NUM_THREADS", std::to_string(threads).c_str(), 0);
   try {
     if (merge->parsed()) return merge_command(shards, merge_db);
     const corrmp::Registries registries = corrmp::builtin_registries();

@@ -72,7 +72,10 @@ struct AutoencoderParams {
     f("learning_rate", learning_rate, "Adam learning rate (the paper: 3e-4)", positive());
     f("epochs", epochs, "training epochs (the paper: 70)", at_least(1));
     f("batch_size", batch_size, "images per Adam step (not given in the paper)", at_least(1));
-    f("threads", threads, "data-parallel worker threads", in_range(1, 64));
+    f("threads", threads,
+      "data-parallel shards of each minibatch, run on as many threads as the run's --threads "
+      "allow (the results depend on this value, not on the cores)",
+      in_range(1, 64));
     f("test_fraction", test_fraction, "share of the images held out (the paper: 40 of 400)",
       in_range(0.0, 0.9));
   }

@@ -13,6 +13,7 @@
 #include "context/autoencoder/data_parallel_trainer.hpp"
 #include "core/interrupt.hpp"
 #include "core/progress.hpp"
+#include "core/thread_budget.hpp"
 #include "nn/check.hpp"
 
 namespace corrmp {
@@ -37,7 +38,10 @@ AutoencoderReport train_autoencoder(ConvAutoencoder<float>& model, nn::ConstMatR
   nn::check_shape("train_autoencoder", "training batch", train, train.rows(), model.image_values());
   nn::check_shape("train_autoencoder", "test batch", test, test.rows(), model.image_values());
 
-  DataParallelTrainer trainer(model, params.threads, params.learning_rate);
+  // params.threads shards (the results depend on it), on at most this run's
+  // thread budget (they do not depend on that).
+  DataParallelTrainer trainer(model, params.threads, params.learning_rate,
+                              std::min(params.threads, thread_budget()));
   const nn::Index n = train.rows();
   const nn::Index batch_size = std::min<nn::Index>(params.batch_size, n);
   std::vector<int> order(static_cast<size_t>(n));

@@ -1,6 +1,7 @@
 // Data-parallel Adam steps on model replicas (data_parallel_trainer.hpp).
 #include "context/autoencoder/data_parallel_trainer.hpp"
 
+#include <algorithm>
 #include <numeric>
 #include <stdexcept>
 
@@ -8,13 +9,14 @@
 
 namespace corrmp {
 
-DataParallelTrainer::DataParallelTrainer(ConvAutoencoder<float>& model, int threads,
-                                         double learning_rate)
+DataParallelTrainer::DataParallelTrainer(ConvAutoencoder<float>& model, int shards,
+                                         double learning_rate, int workers)
     : model_(model),
-      replicas_(static_cast<size_t>(threads > 1 ? threads - 1 : 0), model),
-      pool_(threads),
-      inputs_(static_cast<size_t>(threads)),
-      partial_(static_cast<size_t>(threads), 0.0),
+      shards_(shards),
+      replicas_(static_cast<size_t>(shards > 1 ? shards - 1 : 0), model),
+      pool_(workers > 0 ? std::min(workers, shards) : shards),
+      inputs_(static_cast<size_t>(shards)),
+      partial_(static_cast<size_t>(shards), 0.0),
       adam_(model.parameters(), nn::AdamOptions{learning_rate}) {
   params_.push_back(model.parameters());
   for (auto& replica : replicas_) params_.push_back(replica.parameters());
@@ -27,8 +29,8 @@ void DataParallelTrainer::sync_weights(int r) {
 
 double DataParallelTrainer::step(nn::ConstMatRef<float> data, const int* order, nn::Index batch) {
   if (batch < 1) throw std::invalid_argument("DataParallelTrainer::step: empty minibatch");
-  const int threads = pool_.size();
-  pool_.run([&](int r) {
+  const int threads = shards_;
+  for_each_shard([&](int r) {
     const nn::ScopedFlushDenormals flush_denormals;
     sync_weights(r);
     nn::zero_grad(params_[r]);
@@ -50,9 +52,9 @@ double DataParallelTrainer::step(nn::ConstMatRef<float> data, const int* order, 
 
 double DataParallelTrainer::evaluate(nn::ConstMatRef<float> data) {
   if (data.rows() == 0) throw std::invalid_argument("DataParallelTrainer::evaluate: no images");
-  const int threads = pool_.size();
+  const int threads = shards_;
   const nn::Index rows = data.rows();
-  pool_.run([&](int r) {
+  for_each_shard([&](int r) {
     const nn::ScopedFlushDenormals flush_denormals;
     sync_weights(r);
     const nn::Index begin = r * rows / threads, end = (r + 1) * rows / threads;

@@ -1,14 +1,16 @@
 // Data-parallel Adam steps for the context autoencoder, so that the paper's training (Section III
 // "Learning the Context": Adam, learning rate 3e-4, 70 epochs of 360 images) uses every core.
 //
-// With T workers (worker_pool.hpp), worker 0 computes on the model itself and worker r > 0 on
-// its own replica (a copy of the model with its own weights, activations and gradients). A
-// minibatch of B images is cut into contiguous shards [r B / T, (r + 1) B / T); worker r copies
-// the model's weights into its replica, zeroes its gradients and runs
+// With T shards, shard 0 is computed on the model itself and shard r > 0 on its own replica (a
+// copy of the model with its own weights, activations and gradients). A minibatch of B images
+// is cut into contiguous shards [r B / T, (r + 1) B / T); for shard r a worker copies the
+// model's weights into the replica, zeroes its gradients and runs
 //   g_r = (B_r / B) grad L_r            (L_r: mean squared error of its B_r images)
 // Then the replica gradients are added to the model's in the fixed order r = 1, ..., T - 1, so
 // g = sum_r g_r is the gradient of the minibatch's mean loss, and one Adam step updates the
-// model. Results are deterministic for given inputs and T. Different T compute the same
+// model. The shards run on W <= T workers (worker_pool.hpp; worker w takes shards w, w + W,
+// ...): results are deterministic for given inputs and T, whatever W, so a run keeps its
+// results when a sweep gives it fewer cores. Different T compute the same
 // mathematical step but sum per-image gradient contributions in another order (and run Eigen
 // products on other row counts), so they agree only up to float rounding, which training
 // slowly amplifies. Once every worker has seen its largest shard, a step allocates nothing
@@ -27,9 +29,10 @@ namespace corrmp {
 
 class DataParallelTrainer {
  public:
-  /// Copies `model` into threads - 1 replicas; `model` must outlive the trainer and is the one
-  /// Adam updates.
-  DataParallelTrainer(ConvAutoencoder<float>& model, int threads, double learning_rate);
+  /// Copies `model` into shards - 1 replicas, computed on `workers` threads (0: one per shard,
+  /// at most `shards`); `model` must outlive the trainer and is the one Adam updates.
+  DataParallelTrainer(ConvAutoencoder<float>& model, int shards, double learning_rate,
+                      int workers = 0);
 
   /// One Adam step on the rows order[0], ..., order[batch - 1] of `data` (one image per row);
   /// returns the minibatch's mean squared error (before the step).
@@ -38,6 +41,7 @@ class DataParallelTrainer {
   /// Mean squared reconstruction error of the model over all rows of `data`.
   double evaluate(nn::ConstMatRef<float> data);
 
+  int shards() const { return shards_; }
   int threads() const { return pool_.size(); }
   std::int64_t steps() const { return adam_.step_count(); }
 
@@ -46,12 +50,21 @@ class DataParallelTrainer {
   // Copies the model's weights into replica r (nothing for r = 0); reads the model only.
   void sync_weights(int r);
 
+  // Runs task(r) for every shard r on the pool's workers.
+  template <class Task>
+  void for_each_shard(Task&& task) {
+    pool_.run([&](int w) {
+      for (int r = w; r < shards_; r += pool_.size()) task(r);
+    });
+  }
+
   ConvAutoencoder<float>& model_;
+  int shards_;
   std::vector<ConvAutoencoder<float>> replicas_;
   WorkerPool pool_;
-  std::vector<std::vector<nn::Parameter<float>>> params_;  // [worker][parameter]
-  std::vector<nn::Buffer<float>> inputs_;                  // each worker's shard
-  std::vector<double> partial_;                            // each worker's share of the loss
+  std::vector<std::vector<nn::Parameter<float>>> params_;  // [shard][parameter]
+  std::vector<nn::Buffer<float>> inputs_;                  // each shard's images
+  std::vector<double> partial_;                            // each shard's share of the loss
   nn::Adam<float> adam_;
 };
 

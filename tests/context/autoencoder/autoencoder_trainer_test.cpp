@@ -5,6 +5,10 @@
 
 #include <gtest/gtest.h>
 
+#include <thread>
+
+#include "core/thread_budget.hpp"
+
 #include <Eigen/Dense>
 #include <set>
 #include <stdexcept>
@@ -120,6 +124,26 @@ TEST(AutoencoderTrainer, SameSeedAndThreadsGiveIdenticalWeights) {
   const AutoencoderReport rb = train_squares(b, p, 40, 11);
   EXPECT_EQ(ra.epoch_train_loss, rb.epoch_train_loss);
   EXPECT_EQ(weights_of(a), weights_of(b));
+}
+
+// A run given fewer cores (a sweep's job, --threads 1) runs its shards on
+// fewer workers and gets exactly the same model.
+TEST(AutoencoderTrainer, TheThreadBudgetDoesNotChangeTheResult) {
+  AutoencoderParams p = small_params();
+  p.epochs = 3;
+  p.batch_size = 8;
+  p.threads = 3;
+  std::vector<std::vector<Eigen::VectorXf>> weights;
+  for (int budget : {1, 2, 3}) {
+    set_thread_budget(budget);
+    nn::Rng init(7);
+    ConvAutoencoder<float> model(p.architecture(), init);
+    train_squares(model, p, 37, 21);
+    weights.push_back(weights_of(model));
+  }
+  set_thread_budget(static_cast<int>(std::max(1u, std::thread::hardware_concurrency())));
+  EXPECT_EQ(weights[0], weights[1]);
+  EXPECT_EQ(weights[0], weights[2]);
 }
 
 TEST(AutoencoderTrainer, ThreadCountsGiveTheSameLossCurve) {
