@@ -2,13 +2,15 @@
 //        [--last N] [--csv] [--metric NAME ...] [--paper] [--all]
 // report --compare [--by KEY ...] [--baseline GROUP] [--out DIR] ...
 // report --reproduction --sweep ID --out DIR
+// report --plot-success KEY [--sweep ID ...] --out DIR
 // Prints one row per recorded run (task success, decision match, cor-MP and
 // post-MP errors of the paper's Tables I and II) with the settings that vary
 // between runs of the same experiment, as Markdown or CSV; with --compare,
 // groups of runs side by side with means and 95% intervals across seeds and
 // Fisher's exact test on their pooled trials (run_comparison.hpp); with
 // --reproduction, the paper's Tables I and II against a sweep's runs
-// (paper_report.hpp).
+// (paper_report.hpp) and its figures (reproduction_figures.hpp); with
+// --plot-success, task success against a setting with 95% intervals.
 #include <CLI/CLI.hpp>
 
 #include <filesystem>
@@ -17,6 +19,7 @@
 
 #include "command_line.hpp"
 #include "experiment/paper_report.hpp"
+#include "experiment/reproduction_figures.hpp"
 #include "experiment/run_comparison.hpp"
 #include "experiment/run_report.hpp"
 
@@ -31,6 +34,7 @@ Examples:
   report --compare --experiment corridor_pc corridor_ae corridor_mono --baseline corridor_mono
   report --compare --sweep SWEEP_ID --by policy.type --out results/compare
   report --reproduction --sweep SWEEP_ID --out results/reproduction
+  report --plot-success policy.training.updates --sweep SWEEP_ID --out results/plots
 )";
 
 // A usage error: one line naming the tool, exit code 2.
@@ -71,7 +75,7 @@ int main(int argc, char** argv) {
   corrmp::ReportQuery query;
   corrmp::ReportFormat format;
   corrmp::ComparisonOptions comparison;
-  std::string out_dir;
+  std::string out_dir, plot_success;
   bool csv = false, paper = false, all = false, compare = false, reproduction = false;
   app.add_option("--db", db_path, "result database")->capture_default_str();
   app.add_option("--experiment", query.experiments, "only these experiments");
@@ -92,9 +96,13 @@ int main(int argc, char** argv) {
                  "with --compare: compare this group with every other (default: every pair)");
   app.add_flag("--reproduction", reproduction,
                "write the paper-reproduction report (Tables I and II, rope) to --out");
+  app.add_option("--plot-success", plot_success,
+                 "plot task success (mean and 95% interval across seeds) against this setting or "
+                 "sweep axis ('experiment': per experiment) to --out, one line per group");
   app.add_option("--out", out_dir,
                  "with --compare: write compare.md and compare.csv here; with --reproduction: "
-                 "report.md and report.csv");
+                 "report.md, report.csv and figures/; with --plot-success: "
+                 "success_vs_KEY.png and .csv");
   app.footer(kExamples);
   if (const auto exit_code = corrmp::parse_command_line(app, argc, argv)) return *exit_code;
   query.completed_only = !all;
@@ -109,7 +117,9 @@ int main(int argc, char** argv) {
     return usage_error("--paper is for the run table; --compare and --reproduction have their own");
   }
   if (reproduction && out_dir.empty()) return usage_error("--reproduction needs --out DIR");
-  if (!compare && !reproduction && !out_dir.empty()) {
+  if (!plot_success.empty() && out_dir.empty())
+    return usage_error("--plot-success needs --out DIR");
+  if (!compare && !reproduction && plot_success.empty() && !out_dir.empty()) {
     return usage_error("--out needs --compare or --reproduction");
   }
   if (!std::filesystem::exists(db_path)) {
@@ -126,7 +136,7 @@ int main(int argc, char** argv) {
       if (!sweep) return usage_error("unknown sweep id '" + id + "' in '" + db_path + "'");
     }
     const auto runs = corrmp::load_run_summaries(store, query);
-    if (compare || reproduction) {
+    if (compare || reproduction || !plot_success.empty()) {
       if (const std::string missing = missing_selection(query, runs); !missing.empty()) {
         return usage_error(missing);
       }
@@ -136,6 +146,19 @@ int main(int argc, char** argv) {
       return 1;
     }
 
+    if (!plot_success.empty()) {
+      const auto data = corrmp::success_by_parameter(runs, plot_success);
+      if (data.series.empty()) {
+        return usage_error("no selected run has both a task success rate and a setting '" +
+                           plot_success + "'");
+      }
+      const std::filesystem::path base =
+          std::filesystem::path(out_dir) / ("success_vs_" + plot_success);
+      std::filesystem::create_directories(out_dir);
+      corrmp::write_success_figure(data, base.string() + ".png");
+      write_file(base.string() + ".csv", corrmp::success_csv(data));
+      std::cout << "report: wrote " << base.string() << ".png and .csv\n";
+    }
     if (compare) {
       comparison.extra_metrics = format.extra_metrics;
       const auto result = corrmp::compare_runs(runs, comparison);
@@ -154,9 +177,14 @@ int main(int argc, char** argv) {
       if (query.sweeps.size() == 1) inputs.sweep = sweep;
       // FIGURES: the report's figures go in inputs.figures (path relative to
       // out_dir, caption); figures_section (paper_report.hpp) lists them.
+      corrmp::reproduction_report(inputs);  // refuses runs without the paper's experiments
+      corrmp::FigureSet figures =
+          corrmp::reproduction_figures(runs, corrmp::load_run_files(store, runs), out_dir);
+      inputs.figures = std::move(figures.figures);
+      inputs.figure_notes = std::move(figures.notes);
       corrmp::write_reproduction_report(corrmp::reproduction_report(inputs), out_dir);
       std::cout << "report: wrote " << out_dir << "/report.md and report.csv\n";
-    } else {
+    } else if (plot_success.empty()) {
       std::cout << (csv ? corrmp::report_csv(runs, format) : corrmp::report_markdown(runs, format));
     }
   } catch (const corrmp::ComparisonError& e) {

@@ -410,12 +410,17 @@ std::string reproduction_verdict(int runs, double low, double high, double paper
   return "reproduced";
 }
 
-std::string figures_section(const std::vector<ReportFigure>& figures) {
+std::string figures_section(const std::vector<ReportFigure>& figures,
+                            const std::vector<std::string>& notes) {
   std::string out = "## Figures\n\n";
-  if (figures.empty()) return out + "No figures listed.\n";
+  if (figures.empty()) out += "No figures listed.\n";
   for (size_t i = 0; i < figures.size(); ++i) {
     out += fmt::format("![Figure {}: {}]({})\n\n*Figure {}: {}*\n\n", i + 1, figures[i].caption,
                        figures[i].path, i + 1, figures[i].caption);
+  }
+  if (!notes.empty()) {
+    out += figures.empty() ? "\nSkipped:\n\n" : "Skipped:\n\n";
+    for (const auto& note : notes) out += "- " + note + "\n";
   }
   return out;
 }
@@ -464,7 +469,7 @@ ReproductionReport reproduction_report(const ReproductionInputs& inputs) {
                  : "## Tables I and II (push through the corridor)\n\nNo corridor runs in this "
                    "selection.\n";
   md += "\n" + rope_section(runs_of, cells);
-  md += "\n" + figures_section(inputs.figures);
+  md += "\n" + figures_section(inputs.figures, inputs.figure_notes);
   return {md, csv_text(cells)};
 }
 

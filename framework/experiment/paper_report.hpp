@@ -32,8 +32,9 @@ struct ReportFigure {
 struct ReproductionInputs {
   std::vector<RunSummary> runs;  // e.g. a sweep's completed runs; other experiments are listed only
   std::string paper_tables;      // assets/paper/tables.yaml
-  std::optional<SweepSummary> sweep;  // named in the report's heading when set
-  std::vector<ReportFigure> figures;  // see figures_section
+  std::optional<SweepSummary> sweep;      // named in the report's heading when set
+  std::vector<ReportFigure> figures;      // see figures_section
+  std::vector<std::string> figure_notes;  // figures skipped, and why
 };
 
 struct ReproductionReport {
@@ -51,10 +52,13 @@ void write_reproduction_report(const ReproductionReport& report, const std::stri
 
 // ---- FIGURES -------------------------------------------------------------
 // The report's "Figures" section: one Markdown image with its caption per
-// figure, in the order given. The figures themselves (plots of the runs) are
-// made and listed by the caller: `report --reproduction` passes them in
-// ReproductionInputs::figures.
-std::string figures_section(const std::vector<ReportFigure>& figures);
+// figure, in the order given, then the notes (figures skipped for missing
+// inputs) as a list. The figures themselves (plots of the runs,
+// reproduction_figures.hpp) are made and listed by the caller: `report
+// --reproduction` passes them in ReproductionInputs::figures and
+// ::figure_notes.
+std::string figures_section(const std::vector<ReportFigure>& figures,
+                            const std::vector<std::string>& notes = {});
 
 // The verdict on one cell: "reproduced" when the paper's value, widened by
 // half its last printed digit (`paper_rounding`), meets our interval [low,

@@ -46,8 +46,8 @@ cv::Point PlotPanel::to_pixel(double x, double y) const {
           pixels.y + pixels.height - static_cast<int>(std::lround(v * pixels.height))};
 }
 
-void PlotPanel::draw_frame(cv::Mat& canvas, const std::string& title,
-                           const std::string& x_label) const {
+void PlotPanel::draw_frame(cv::Mat& canvas, const std::string& title, const std::string& x_label,
+                           bool x_end_ticks) const {
   const cv::Point top_left = pixels.tl();
   const cv::Point bottom_right = pixels.br();
   cv::rectangle(canvas, top_left, bottom_right, kPlotBlack, 1);
@@ -56,12 +56,20 @@ void PlotPanel::draw_frame(cv::Mat& canvas, const std::string& title,
            0.45);
   cv::line(canvas, {top_left.x - 4, top_left.y}, top_left, kPlotBlack);
   cv::line(canvas, {top_left.x - 4, bottom_right.y}, {top_left.x, bottom_right.y}, kPlotBlack);
-  cv::line(canvas, {top_left.x, bottom_right.y}, {top_left.x, bottom_right.y + 4}, kPlotBlack);
-  cv::line(canvas, bottom_right, {bottom_right.x, bottom_right.y + 4}, kPlotBlack);
-  put_text(canvas, tick_label(y_max), {top_left.x - 50, top_left.y + 4});
-  put_text(canvas, tick_label(y_min), {top_left.x - 50, bottom_right.y + 4});
-  put_text(canvas, tick_label(x_min), {top_left.x - 8, bottom_right.y + 16});
-  put_text(canvas, tick_label(x_max), {bottom_right.x - 24, bottom_right.y + 16});
+  // The y labels end 6 px left of the axis.
+  for (const auto& [value, row] :
+       {std::pair{y_max, top_left.y}, std::pair{y_min, bottom_right.y}}) {
+    const std::string label = tick_label(value);
+    int baseline = 0;
+    const int width = cv::getTextSize(label, cv::FONT_HERSHEY_SIMPLEX, 0.4, 1, &baseline).width;
+    put_text(canvas, label, {top_left.x - 6 - width, row + 4});
+  }
+  if (x_end_ticks) {
+    cv::line(canvas, {top_left.x, bottom_right.y}, {top_left.x, bottom_right.y + 4}, kPlotBlack);
+    cv::line(canvas, bottom_right, {bottom_right.x, bottom_right.y + 4}, kPlotBlack);
+    put_text(canvas, tick_label(x_min), {top_left.x - 8, bottom_right.y + 16});
+    put_text(canvas, tick_label(x_max), {bottom_right.x - 24, bottom_right.y + 16});
+  }
   put_text(
       canvas, x_label,
       {top_left.x + pixels.width / 2 - 3 * static_cast<int>(x_label.size()), bottom_right.y + 32});

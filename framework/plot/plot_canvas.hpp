@@ -35,8 +35,10 @@ struct PlotPanel {
 
   cv::Point to_pixel(double x, double y) const;
   // The frame, the end ticks with their labels, the title above and the x
-  // label below, drawn in the margins plot_area_in leaves.
-  void draw_frame(cv::Mat& canvas, const std::string& title, const std::string& x_label) const;
+  // label below, drawn in the margins plot_area_in leaves; without
+  // `x_end_ticks`, no x tick labels (a categorical axis labels its own).
+  void draw_frame(cv::Mat& canvas, const std::string& title, const std::string& x_label,
+                  bool x_end_ticks = true) const;
 };
 
 // The plot area of a figure cell: the cell less the margins draw_frame's
