@@ -4,7 +4,9 @@
 // minibatch step: forward + backward on every image + gradient reduction + Adam step, with the
 // data-parallel trainer on 1 or 2 threads (context/autoencoder/data_parallel_trainer.hpp).
 // items_per_second is images per second; GFLOP/s counts the multiply-adds of the convolution
-// and Linear products (2 flops each): forward, weight gradient and input gradient.
+// and Linear products (2 flops each) as direct convolutions compute them: forward, weight
+// gradient and input gradient. The stride-1 layers run Winograd's algorithm
+// (nn/winograd_conv3x3.hpp) with fewer multiply-adds, so this is an effective rate.
 // Arguments: {batch size, threads}.
 #include <benchmark/benchmark.h>
 

@@ -6,6 +6,7 @@
 #include "nn/channel_major.hpp"
 #include "nn/check.hpp"
 #include "nn/im2col.hpp"
+#include "nn/relu_fusion.hpp"
 
 namespace corrmp::nn {
 
@@ -27,11 +28,11 @@ Conv2d<S>::Conv2d(const Conv2dOptions& options, Index input_height, Index input_
 }
 
 template <class S>
-void Conv2d<S>::forward(ConstMatRef<S> x, MatRef<S> y) {
+void Conv2d<S>::forward(ConstMatRef<S> x, MatRef<S> y, bool relu) {
   check_shape("Conv2d::forward", "x", x, x.rows(), input_shape().size());
   check_shape("Conv2d::forward", "y", y, x.rows(), output_shape().size());
   if (winograd_) {
-    winograd_->forward(weight_.data(), bias_.data(), x, y);
+    winograd_->forward(weight_.data(), bias_.data(), x, y, relu);
     return;
   }
   const Index cout = options_.out_channels, positions = geometry_.positions();
@@ -45,11 +46,13 @@ void Conv2d<S>::forward(ConstMatRef<S> x, MatRef<S> y) {
                         Eigen::OuterStride<>(positions));
       out.colwise() = bias_;
       out.noalias() += weight_ * cols;
+      if (relu) relu_in_place(out);
       return;
     }
     MatMap<S> out = outputs_.resize(cout, columns);
     out.colwise() = bias_;
     out.noalias() += weight_ * cols;
+    if (relu) relu_in_place(out);
     scatter_channel_major(out.data(), chunk.images, cout, positions, y_first, y.outerStride());
   });
 }
@@ -61,10 +64,11 @@ void Conv2d<S>::check_batch(const char* where, ConstMatRef<S> x, ConstMatRef<S> 
 }
 
 template <class S>
-void Conv2d<S>::backward_chunks(ConstMatRef<S> x, ConstMatRef<S> dy, S* dx, Index dx_stride) {
+void Conv2d<S>::backward_chunks(ConstMatRef<S> x, ConstMatRef<S> dy, S* dx, Index dx_stride,
+                                bool relu_input) {
   if (winograd_) {
     winograd_->backward(weight_.data(), x, dy, weight_grad_.data(), bias_grad_.data(), dx,
-                        dx_stride);
+                        dx_stride, relu_input);
     return;
   }
   const Index cout = options_.out_channels, positions = geometry_.positions();
@@ -88,20 +92,23 @@ void Conv2d<S>::backward_chunks(ConstMatRef<S> x, ConstMatRef<S> dy, S* dx, Inde
     MatMap<S> col_grads = column_grads_.resize(geometry_.patch_size(), columns);
     col_grads.noalias() = weight_.transpose() * dy_chunk;
     col2im_chunk(col_grads.data(), geometry_, chunk, dx, dx_stride);
+    if (relu_input && chunk.row_end == geometry_.out_height)  // the chunk's images are complete
+      mask_by_relu_output(x.row(chunk.image_begin).data(), x.outerStride(), chunk.images,
+                          input_shape().size(), dx + chunk.image_begin * dx_stride, dx_stride);
   });
 }
 
 template <class S>
 void Conv2d<S>::accumulate_param_grad(ConstMatRef<S> x, ConstMatRef<S> dy) {
   check_batch("Conv2d::backward", x, dy);
-  backward_chunks(x, dy, nullptr, 0);
+  backward_chunks(x, dy, nullptr, 0, false);
 }
 
 template <class S>
-void Conv2d<S>::backward(ConstMatRef<S> x, ConstMatRef<S> dy, MatRef<S> dx) {
+void Conv2d<S>::backward(ConstMatRef<S> x, ConstMatRef<S> dy, MatRef<S> dx, bool relu_input) {
   check_batch("Conv2d::backward", x, dy);
   check_shape("Conv2d::backward", "dx", dx, x.rows(), input_shape().size());
-  backward_chunks(x, dy, dx.data(), dx.outerStride());
+  backward_chunks(x, dy, dx.data(), dx.outerStride(), relu_input);
 }
 
 template <class S>

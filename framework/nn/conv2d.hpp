@@ -8,10 +8,11 @@
 //   backward:  dL/dW += dY_n U^T                          (accumulated)
 //              dL/db += dY_n 1                            (row sums, accumulated)
 //              dL/dx_n = col2im(W^T dY_n)                 (overwritten)
-// The images of a batch are processed in chunks (nn/im2col.hpp, images_per_chunk): U is the
-// column matrix of a whole chunk and dY its output gradient in channel-major order
-// (nn/channel_major.hpp), so each formula above is one matrix product per chunk, summing over
-// every pixel of the chunk's images at once. Y starts as b 1^T and the product is added to it.
+// The batch is processed in chunks of positions (nn/im2col.hpp, for_each_position_chunk: several
+// whole images, or runs of output rows of one image, sized to keep U in cache): U is the column
+// matrix of a chunk and dY its output gradient in channel-major order (nn/channel_major.hpp), so
+// each formula above is one matrix product per chunk, summing over all of the chunk's positions
+// at once. Y starts as b 1^T and the product is added to it.
 // Layers with kernel 3, stride 1 and padding 1 compute the same formulas by Winograd's F(2x2, 3x3)
 // (nn/winograd_conv3x3.hpp), with 2.25 times fewer multiply-adds.
 // Initialisation follows torch.nn.Conv2d: W, b ~ U(-1/sqrt(Cin k k), 1/sqrt(Cin k k)), W first.
@@ -49,10 +50,12 @@ class Conv2d {
   /// A convolution of images of spatial size input_height x input_width.
   Conv2d(const Conv2dOptions& options, Index input_height, Index input_width, Rng& rng);
 
-  /// y = conv(x) + b. x is N x input_shape().size(), y is N x output_shape().size().
-  void forward(ConstMatRef<S> x, MatRef<S> y);
-  /// Accumulates the parameter gradients and writes dx (N x input_shape().size()).
-  void backward(ConstMatRef<S> x, ConstMatRef<S> dy, MatRef<S> dx);
+  /// y = conv(x) + b, or relu(conv(x) + b) with relu (nn/relu_fusion.hpp). x is
+  /// N x input_shape().size(), y is N x output_shape().size().
+  void forward(ConstMatRef<S> x, MatRef<S> y, bool relu = false);
+  /// Accumulates the parameter gradients and writes dx (N x input_shape().size()). With
+  /// relu_input, x is the output of a ReLU and dx the gradient before it, dL/dx [x > 0].
+  void backward(ConstMatRef<S> x, ConstMatRef<S> dy, MatRef<S> dx, bool relu_input = false);
   /// Accumulates dL/dW and dL/db only (for a first layer whose input needs no gradient).
   void accumulate_param_grad(ConstMatRef<S> x, ConstMatRef<S> dy);
 
@@ -74,7 +77,8 @@ class Conv2d {
  private:
   void check_batch(const char* where, ConstMatRef<S> x, ConstMatRef<S> dy) const;
   // The parameter gradients and, when dx is not null, the input gradient (rows dx_stride apart).
-  void backward_chunks(ConstMatRef<S> x, ConstMatRef<S> dy, S* dx, Index dx_stride);
+  void backward_chunks(ConstMatRef<S> x, ConstMatRef<S> dy, S* dx, Index dx_stride,
+                       bool relu_input);
 
   Conv2dOptions options_;
   PatchGeometry geometry_;

@@ -9,6 +9,7 @@
 #include "nn/channel_major.hpp"
 #include "nn/check.hpp"
 #include "nn/im2col.hpp"
+#include "nn/relu_fusion.hpp"
 
 namespace corrmp::nn {
 namespace {
@@ -73,11 +74,11 @@ ConstStridedMap<S> channel_major_chunk(const PatchGeometry& g, const PositionChu
 }  // namespace
 
 template <class S>
-void ConvTranspose2d<S>::forward(ConstMatRef<S> x, MatRef<S> y) {
+void ConvTranspose2d<S>::forward(ConstMatRef<S> x, MatRef<S> y, bool relu) {
   check_shape("ConvTranspose2d::forward", "x", x, x.rows(), input_shape().size());
   check_shape("ConvTranspose2d::forward", "y", y, x.rows(), output_shape().size());
   if (winograd_) {
-    winograd_->forward(weight_.data(), bias_.data(), x, y);
+    winograd_->forward(weight_.data(), bias_.data(), x, y, relu);
     return;
   }
   const Index cin = options_.in_channels;
@@ -87,17 +88,20 @@ void ConvTranspose2d<S>::forward(ConstMatRef<S> x, MatRef<S> y) {
     MatMap<S> cols = columns_.resize(geometry_.patch_size(), chunk.columns(geometry_));
     cols.noalias() = weight_.transpose() * x_chunk;
     col2im_chunk(cols.data(), geometry_, chunk, y.data(), y.outerStride(), bias_.data());
+    if (relu && chunk.row_end == geometry_.out_height)  // the chunk's images are complete
+      relu_in_place(y.middleRows(chunk.image_begin, chunk.images));
   });
 }
 
 template <class S>
-void ConvTranspose2d<S>::backward(ConstMatRef<S> x, ConstMatRef<S> dy, MatRef<S> dx) {
+void ConvTranspose2d<S>::backward(ConstMatRef<S> x, ConstMatRef<S> dy, MatRef<S> dx,
+                                  bool relu_input) {
   check_shape("ConvTranspose2d::backward", "x", x, x.rows(), input_shape().size());
   check_shape("ConvTranspose2d::backward", "dy", dy, x.rows(), output_shape().size());
   check_shape("ConvTranspose2d::backward", "dx", dx, x.rows(), input_shape().size());
   if (winograd_) {
     winograd_->backward(weight_.data(), x, dy, weight_grad_.data(), bias_grad_.data(), dx.data(),
-                        dx.outerStride());
+                        dx.outerStride(), relu_input);
     return;
   }
   const Index cin = options_.in_channels, cout = options_.out_channels;
@@ -115,9 +119,11 @@ void ConvTranspose2d<S>::backward(ConstMatRef<S> x, ConstMatRef<S> dy, MatRef<S>
     weight_grad_.noalias() += x_chunk * cols.transpose();
     S* dx_first = dx.row(chunk.image_begin).data();
     if (chunk.images == 1) {  // a block of one image's rows, written in place
-      StridedMap<S>(dx_first + chunk.row_begin * geometry_.out_width, cin, columns,
-                    Eigen::OuterStride<>(in_pixels))
-          .noalias() = weight_ * cols;
+      StridedMap<S> dx_block(dx_first + chunk.row_begin * geometry_.out_width, cin, columns,
+                             Eigen::OuterStride<>(in_pixels));
+      dx_block.noalias() = weight_ * cols;
+      if (relu_input)  // x_chunk is the same block of x
+        dx_block = (x_chunk.array() > S(0)).select(dx_block.array(), S(0)).matrix();
       return;
     }
     // The gathered inputs are no longer needed: their buffer takes the input gradients.
@@ -125,6 +131,9 @@ void ConvTranspose2d<S>::backward(ConstMatRef<S> x, ConstMatRef<S> dy, MatRef<S>
     dx_chunk.noalias() = weight_ * cols;
     scatter_channel_major(dx_chunk.data(), chunk.images, cin, in_pixels, dx_first,
                           dx.outerStride());
+    if (relu_input)
+      mask_by_relu_output(x.row(chunk.image_begin).data(), x.outerStride(), chunk.images,
+                          input_shape().size(), dx_first, dx.outerStride());
   });
 }
 

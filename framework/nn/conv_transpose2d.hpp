@@ -10,8 +10,8 @@
 //              dL/dW += X_n V^T                          (accumulated)
 //              dL/db += dY_n 1                           (row sums, accumulated)
 //              dL/dX_n = W V                             (overwritten)
-// The images of a batch are processed in chunks (nn/im2col.hpp, images_per_chunk), each
-// formula being one matrix product over all pixels of the chunk's images, with X and dL/dX in
+// The batch is processed in chunks of input pixels (nn/im2col.hpp, for_each_position_chunk), each
+// formula being one matrix product over all of a chunk's pixels, with X and dL/dX in
 // channel-major order (nn/channel_major.hpp); col2im starts Y at b 1^T.
 // With kernel 3, stride 1, padding 1 (and so no output padding) the layer is the convolution with
 // the kernel flipped and the channel roles exchanged, computed by Winograd's F(2x2, 3x3)
@@ -49,10 +49,12 @@ class ConvTranspose2d {
   ConvTranspose2d(const ConvTranspose2dOptions& options, Index input_height, Index input_width,
                   Rng& rng);
 
-  /// y = conv_transpose(x) + b. x is N x input_shape().size(), y is N x output_shape().size().
-  void forward(ConstMatRef<S> x, MatRef<S> y);
-  /// Accumulates the parameter gradients and writes dx (N x input_shape().size()).
-  void backward(ConstMatRef<S> x, ConstMatRef<S> dy, MatRef<S> dx);
+  /// y = conv_transpose(x) + b, or relu(conv_transpose(x) + b) with relu (nn/relu_fusion.hpp).
+  /// x is N x input_shape().size(), y is N x output_shape().size().
+  void forward(ConstMatRef<S> x, MatRef<S> y, bool relu = false);
+  /// Accumulates the parameter gradients and writes dx (N x input_shape().size()). With
+  /// relu_input, x is the output of a ReLU and dx the gradient before it, dL/dx [x > 0].
+  void backward(ConstMatRef<S> x, ConstMatRef<S> dy, MatRef<S> dx, bool relu_input = false);
 
   /// {prefix + "weight" [Cin, Cout, k, k], prefix + "bias" [Cout]}.
   std::vector<Parameter<S>> parameters(const std::string& prefix = "");

@@ -8,6 +8,7 @@
 #include "nn/winograd_conv3x3.hpp"
 
 #include <algorithm>
+#include <limits>
 #include <stdexcept>
 
 namespace corrmp::nn {
@@ -212,6 +213,32 @@ void split(const S* row, Index width, Index tiles, S* __restrict even, S* __rest
   }
 }
 
+// One image row of the input gradient from the B dV B^T entries of the two tile rows that
+// cover it (a: patch row r, b: patch row r + 2 of the tile row above, or zeros): column 2 m gets
+// entries 1 of tile m and 3 of tile m - 1, column 2 m + 1 entries 2 of tile m and 0 of tile
+// m + 1. Overwrites row; zeroes the entries where keep (the layer input after a ReLU) is not
+// positive, unless keep is null.
+template <class S>
+void overlap_row(Index width, Index tiles, const S* const* a, const S* const* b,
+                 const S* __restrict keep, S* __restrict row) {
+  const auto out = [&](Index w, S value) {
+    row[w] = keep == nullptr || keep[w] > S(0) ? value : S(0);
+  };
+  const S *a0 = a[0], *a1 = a[1], *a2 = a[2], *a3 = a[3];
+  const S *b0 = b[0], *b1 = b[1], *b2 = b[2], *b3 = b[3];
+  out(0, a1[0] + b1[0]);
+  if (width > 1) out(1, a2[0] + b2[0] + (tiles > 1 ? a0[1] + b0[1] : S(0)));
+  for (Index m = 1; m + 1 < tiles; ++m) {
+    out(2 * m, a1[m] + b1[m] + a3[m - 1] + b3[m - 1]);
+    out(2 * m + 1, a2[m] + b2[m] + a0[m + 1] + b0[m + 1]);
+  }
+  if (tiles > 1) {
+    const Index m = tiles - 1;
+    out(2 * m, a1[m] + b1[m] + a3[m - 1] + b3[m - 1]);
+    if (2 * m + 1 < width) out(2 * m + 1, a2[m] + b2[m]);
+  }
+}
+
 }  // namespace
 
 template <class S>
@@ -325,7 +352,8 @@ void WinogradConv3x3<S>::transform_output_grads(const S* images, Index stride, I
 }
 
 template <class S>
-void WinogradConv3x3<S>::write_outputs(const S* bias, Index count, S* images, Index stride) {
+void WinogradConv3x3<S>::write_outputs(const S* bias, Index count, S* images, Index stride,
+                                       bool relu) {
   const Index H = height_, W = width_, TW = tile_cols_, T = tile_rows_ * TW;
   const Index columns = count * T, terms = term_stride(out_channels_, columns);
   const S* m = m_.view().data();
@@ -341,17 +369,19 @@ void WinogradConv3x3<S>::write_outputs(const S* bias, Index count, S* images, In
         S* __restrict row = channel + h * W;
         const S* ye = y(h % 2, 0) + (h / 2) * TW;
         const S* yo = y(h % 2, 1) + (h / 2) * TW;
+        const S floor = relu ? S(0) : -std::numeric_limits<S>::infinity();
         for (Index mm = 0; mm < W / 2; ++mm) {
-          row[2 * mm] = ye[mm] + bias_o;
-          row[2 * mm + 1] = yo[mm] + bias_o;
+          row[2 * mm] = std::max(ye[mm] + bias_o, floor);
+          row[2 * mm + 1] = std::max(yo[mm] + bias_o, floor);
         }
-        if (W % 2 == 1) row[W - 1] = ye[TW - 1] + bias_o;
+        if (W % 2 == 1) row[W - 1] = std::max(ye[TW - 1] + bias_o, floor);
       }
     }
 }
 
 template <class S>
-void WinogradConv3x3<S>::write_input_grads(Index count, S* images, Index stride) {
+void WinogradConv3x3<S>::write_input_grads(Index count, S* images, Index stride,
+                                           const S* relu_inputs, Index input_stride) {
   const Index H = height_, W = width_, TW = tile_cols_, T = tile_rows_ * TW;
   const Index columns = count * T, terms = term_stride(in_channels_, columns);
   const S* dv = v_.view().data();
@@ -359,41 +389,31 @@ void WinogradConv3x3<S>::write_input_grads(Index count, S* images, Index stride)
   // (2 ty - 1 + r, 2 tx - 1 + q), for all tiles of a channel before they are added up.
   const Index f_stride = scratch(1) - scratch(0);
   const auto f = [&](int r, int q) { return scratch(4 * r + q); };
+  S* zeros = scratch(16);
+  std::fill(zeros, zeros + TW + 1, S(0));
   for (Index n = 0; n < count; ++n)
     for (Index c = 0; c < in_channels_; ++c) {
       input_grad_tiles(T, dv + c * columns + n * T, terms, f(0, 0), f_stride);
       S* channel = images + n * stride + c * H * W;
-      std::fill(channel, channel + H * W, S(0));
-      // Image column 2 m gets entry 1 of tile m and entry 3 of tile m - 1; column 2 m + 1
-      // entry 2 of tile m and entry 0 of tile m + 1.
-      for (Index ty = 0; ty < tile_rows_; ++ty)
-        for (int r = 0; r < 4; ++r) {
-          const Index h = 2 * ty - 1 + r;
-          if (h < 0 || h >= H) continue;
-          S* __restrict row = channel + h * W;
-          const Index offset = ty * TW;
-          const S* f0 = f(r, 0) + offset;
-          const S* f1 = f(r, 1) + offset;
-          const S* f2 = f(r, 2) + offset;
-          const S* f3 = f(r, 3) + offset;
-          row[0] += f1[0];
-          if (W > 1) row[1] += f2[0] + (TW > 1 ? f0[1] : S(0));
-          const Index pairs = W / 2 - (W % 2 == 0 ? 1 : 0);  // m with 2 m + 1 and m + 1 < TW
-          for (Index mm = 1; mm < pairs; ++mm) {
-            row[2 * mm] += f1[mm] + f3[mm - 1];
-            row[2 * mm + 1] += f2[mm] + f0[mm + 1];
-          }
-          if (W % 2 == 0 && W > 2) {  // the last pair: no tile TW
-            row[W - 2] += f1[TW - 1] + f3[TW - 2];
-            row[W - 1] += f2[TW - 1];
-          }
-          if (W % 2 == 1 && W > 1) row[W - 1] += f1[TW - 1] + f3[TW - 2];
+      const S* input = relu_inputs ? relu_inputs + n * input_stride + c * H * W : nullptr;
+      for (Index h = 0; h < H; ++h) {
+        // Padded row h + 1 is patch row r of tile row (h + 1) / 2 and patch row r + 2 of the
+        // tile row above, r = (h + 1) mod 2.
+        const Index below = (h + 1) / 2, above = below - 1, r = (h + 1) % 2;
+        const S* a[4];
+        const S* b[4];
+        for (int q = 0; q < 4; ++q) {
+          a[q] = below < tile_rows_ ? f(r, q) + below * TW : zeros;
+          b[q] = above >= 0 ? f(r + 2, q) + above * TW : zeros;
         }
+        overlap_row(W, TW, a, b, input ? input + h * W : nullptr, channel + h * W);
+      }
     }
 }
 
 template <class S>
-void WinogradConv3x3<S>::forward(const S* weight, const S* bias, ConstMatRef<S> x, MatRef<S> y) {
+void WinogradConv3x3<S>::forward(const S* weight, const S* bias, ConstMatRef<S> x, MatRef<S> y,
+                                 bool relu) {
   transform_weights(weight);
   const Index batch = x.rows(), chunk = chunk_images(batch);
   const Index tiles = tile_rows_ * tile_cols_, cin = in_channels_, cout = out_channels_;
@@ -407,13 +427,14 @@ void WinogradConv3x3<S>::forward(const S* weight, const S* bias, ConstMatRef<S> 
       const ConstMatMap<S> v(v_.view().data() + xi * v_terms, cin, columns);
       MatMap<S>(m_.view().data() + xi * m_terms, cout, columns).noalias() = u * v;
     }
-    write_outputs(bias, count, y.row(first).data(), y.outerStride());
+    write_outputs(bias, count, y.row(first).data(), y.outerStride(), relu);
   }
 }
 
 template <class S>
 void WinogradConv3x3<S>::backward(const S* weight, ConstMatRef<S> x, ConstMatRef<S> dy,
-                                  S* weight_grad, S* bias_grad, S* dx, Index dx_stride) {
+                                  S* weight_grad, S* bias_grad, S* dx, Index dx_stride,
+                                  bool relu_input) {
   transform_weights(weight);
   const Index batch = x.rows(), chunk = chunk_images(batch);
   const Index tiles = tile_rows_ * tile_cols_, cin = in_channels_, cout = out_channels_;
@@ -435,7 +456,9 @@ void WinogradConv3x3<S>::backward(const S* weight, ConstMatRef<S> x, ConstMatRef
       MatMap<S>(du.data() + xi * du.cols(), cout, cin).noalias() += dm * v.transpose();
       if (dx != nullptr) v.noalias() = u.transpose() * dm;  // V_xi is used up: it takes dV_xi
     }
-    if (dx != nullptr) write_input_grads(count, dx + first * dx_stride, dx_stride);
+    if (dx != nullptr)
+      write_input_grads(count, dx + first * dx_stride, dx_stride,
+                        relu_input ? x.row(first).data() : nullptr, x.outerStride());
   }
   // dL/dg = G^T dU G for every channel pair.
   const S half(0.5);

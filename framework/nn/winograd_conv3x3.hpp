@@ -42,13 +42,15 @@ class WinogradConv3x3 {
   WinogradConv3x3(Index in_channels, Index out_channels, Index height, Index width,
                   KernelLayout layout);
 
-  /// y = conv(x) + bias; x is N x (Cin H W), y is N x (Cout H W).
-  void forward(const S* weight, const S* bias, ConstMatRef<S> x, MatRef<S> y);
+  /// y = conv(x) + bias, or relu(conv(x) + bias) with relu; x is N x (Cin H W), y is
+  /// N x (Cout H W).
+  void forward(const S* weight, const S* bias, ConstMatRef<S> x, MatRef<S> y, bool relu = false);
 
   /// Accumulates dL/dW into weight_grad (the layout of weight) and dL/db into bias_grad, and
-  /// overwrites dx (N rows dx_stride apart) with dL/dx unless dx is null.
+  /// overwrites dx (N rows dx_stride apart) with dL/dx unless dx is null. With relu_input, x is
+  /// the output of a ReLU and dx is the gradient before it: dL/dx [x > 0].
   void backward(const S* weight, ConstMatRef<S> x, ConstMatRef<S> dy, S* weight_grad, S* bias_grad,
-                S* dx, Index dx_stride);
+                S* dx, Index dx_stride, bool relu_input = false);
 
  private:
   static constexpr int kTerms = 16;  // entries of a 4x4 tile transform
@@ -67,10 +69,12 @@ class WinogradConv3x3 {
   void transform_inputs(const S* images, Index stride, Index count);
   // dM of `count` output-gradient images into m_ (kTerms matrices Cout x count tiles).
   void transform_output_grads(const S* images, Index stride, Index count);
-  // Writes A^T M A + b from m_ into `count` images.
-  void write_outputs(const S* bias, Index count, S* images, Index stride);
-  // Writes the sum of B dV B^T from v_ into `count` images.
-  void write_input_grads(Index count, S* images, Index stride);
+  // Writes A^T M A + b (through a ReLU with relu) from m_ into `count` images.
+  void write_outputs(const S* bias, Index count, S* images, Index stride, bool relu);
+  // Writes the sum of B dV B^T from v_ into `count` images, times [input > 0] for the inputs
+  // (rows input_stride apart) unless relu_inputs is null.
+  void write_input_grads(Index count, S* images, Index stride, const S* relu_inputs,
+                         Index input_stride);
 
   Index in_channels_, out_channels_, height_, width_;
   KernelLayout layout_;

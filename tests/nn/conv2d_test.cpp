@@ -32,8 +32,8 @@ std::string case_name(const ::testing::TestParamInfo<ConvCase>& info) {
 void PrintTo(const ConvCase& c, std::ostream* os) { *os << describe(c); }
 
 const ConvCase kCases[] = {
-    {3, 1, 0, 6, 5}, {3, 1, 1, 5, 6}, {3, 2, 1, 7, 6}, {3, 2, 0, 7, 7},
-    {2, 2, 0, 6, 4}, {1, 1, 0, 3, 4}, {3, 3, 2, 5, 5}, {5, 2, 2, 6, 7},
+    {3, 1, 0, 6, 5}, {3, 1, 1, 5, 6}, {3, 2, 1, 7, 6}, {3, 2, 0, 7, 7}, {2, 2, 0, 6, 4},
+    {1, 1, 0, 3, 4}, {3, 3, 2, 5, 5}, {5, 2, 2, 6, 7}, {3, 2, 1, 8, 6}, {3, 1, 1, 1, 1},
 };
 
 class Conv2dCases : public ::testing::TestWithParam<ConvCase> {
@@ -46,6 +46,7 @@ class Conv2dCases : public ::testing::TestWithParam<ConvCase> {
 
 using Conv2dGrad = Conv2dCases;
 using Conv2dForward = Conv2dCases;
+using Conv2dFusedRelu = Conv2dCases;
 
 TEST_P(Conv2dForward, MatchesNaiveDirectLoop) {
   const ConvCase& c = GetParam();
@@ -79,7 +80,32 @@ TEST_P(Conv2dGrad, MatchesFiniteDifferences) {
   testing::expect_gradients_match(loss, testing::cases_for("x", x, dx, params));
 }
 
+// forward(relu) is relu(forward) and backward(relu_input) masks the input gradient by x > 0,
+// with the same parameter gradients (nn/relu_fusion.hpp).
+TEST_P(Conv2dFusedRelu, EqualsSeparateRelu) {
+  const ConvCase& c = GetParam();
+  Rng rng(28);
+  Conv2d<double> conv(options(), c.height, c.width, rng);
+  const Index n = 3;
+  const MatD x = testing::random_matrix(n, conv.input_shape().size(), rng).cwiseMax(0.0);
+  MatD y(n, conv.output_shape().size()), y_relu(n, conv.output_shape().size());
+  conv.forward(x, y);
+  conv.forward(x, y_relu, /*relu=*/true);
+  EXPECT_EQ(y_relu, y.cwiseMax(0.0));
+  const MatD dy = testing::random_matrix(n, conv.output_shape().size(), rng);
+  auto params = conv.parameters();
+  MatD dx(n, x.cols()), dx_masked(n, x.cols());
+  zero_grad(params);
+  conv.backward(x, dy, dx);
+  const MatD weight_grad = conv.weight_grad();
+  zero_grad(params);
+  conv.backward(x, dy, dx_masked, /*relu_input=*/true);
+  EXPECT_EQ(dx_masked, (x.array() > 0.0).select(dx, 0.0));
+  EXPECT_EQ(conv.weight_grad(), weight_grad);
+}
+
 INSTANTIATE_TEST_SUITE_P(StridePadding, Conv2dForward, ::testing::ValuesIn(kCases), case_name);
+INSTANTIATE_TEST_SUITE_P(StridePadding, Conv2dFusedRelu, ::testing::ValuesIn(kCases), case_name);
 INSTANTIATE_TEST_SUITE_P(StridePadding, Conv2dGrad, ::testing::ValuesIn(kCases), case_name);
 
 TEST(Conv2dGrad, ParamOnlyBackwardMatchesFullBackward) {

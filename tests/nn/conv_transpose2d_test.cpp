@@ -49,6 +49,7 @@ class ConvTranspose2dCases : public ::testing::TestWithParam<TransposeCase> {
 using ConvTranspose2dGrad = ConvTranspose2dCases;
 using ConvTranspose2dForward = ConvTranspose2dCases;
 using ConvTranspose2dAdjoint = ConvTranspose2dCases;
+using ConvTranspose2dFusedRelu = ConvTranspose2dCases;
 
 TEST_P(ConvTranspose2dForward, MatchesNaiveScatterLoop) {
   const TransposeCase& c = GetParam();
@@ -108,6 +109,32 @@ TEST_P(ConvTranspose2dAdjoint, IsAdjointOfConv2dWithSharedWeights) {
   EXPECT_NEAR(lhs, rhs, 1e-12 * (std::abs(lhs) + 1.0));
 }
 
+// forward(relu) is relu(forward) and backward(relu_input) masks the input gradient by x > 0,
+// with the same parameter gradients (nn/relu_fusion.hpp).
+TEST_P(ConvTranspose2dFusedRelu, EqualsSeparateRelu) {
+  const TransposeCase& c = GetParam();
+  Rng rng(33);
+  ConvTranspose2d<double> layer(options(), c.height, c.width, rng);
+  const Index n = 3;
+  const MatD x = testing::random_matrix(n, layer.input_shape().size(), rng).cwiseMax(0.0);
+  MatD y(n, layer.output_shape().size()), y_relu(n, layer.output_shape().size());
+  layer.forward(x, y);
+  layer.forward(x, y_relu, /*relu=*/true);
+  EXPECT_EQ(y_relu, y.cwiseMax(0.0));
+  const MatD dy = testing::random_matrix(n, layer.output_shape().size(), rng);
+  auto params = layer.parameters();
+  MatD dx(n, x.cols()), dx_masked(n, x.cols());
+  zero_grad(params);
+  layer.backward(x, dy, dx);
+  const MatD weight_grad = layer.weight_grad();
+  zero_grad(params);
+  layer.backward(x, dy, dx_masked, /*relu_input=*/true);
+  EXPECT_EQ(dx_masked, (x.array() > 0.0).select(dx, 0.0));
+  EXPECT_EQ(layer.weight_grad(), weight_grad);
+}
+
+INSTANTIATE_TEST_SUITE_P(StridePadding, ConvTranspose2dFusedRelu, ::testing::ValuesIn(kCases),
+                         case_name);
 INSTANTIATE_TEST_SUITE_P(StridePadding, ConvTranspose2dForward, ::testing::ValuesIn(kCases),
                          case_name);
 INSTANTIATE_TEST_SUITE_P(StridePadding, ConvTranspose2dGrad, ::testing::ValuesIn(kCases),

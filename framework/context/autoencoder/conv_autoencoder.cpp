@@ -137,15 +137,13 @@ template <class S>
 void ConvAutoencoder<S>::forward_encoder(nn::ConstMatRef<S> x) {
   nn::check_shape("ConvAutoencoder", "images", x, x.rows(), image_values());
   const nn::Index n = x.rows();
-  const nn::Relu<S> relu;
   for (size_t i = 0; i < encoder_convs_.size(); ++i) {
     nn::Conv2d<S>& conv = encoder_convs_[i];
     nn::MatMap<S> y = encoded_[i].resize(n, conv.output_shape().size());
     if (i == 0)
-      conv.forward(x, y);
+      conv.forward(x, y, /*relu=*/true);
     else
-      conv.forward(encoded_[i - 1].view(), y);
-    relu.forward(y, y);
+      conv.forward(encoded_[i - 1].view(), y, /*relu=*/true);
   }
   encoder_fc_.forward(encoded_.back().view(), latent_.resize(n, architecture_.latent_size));
 }
@@ -161,14 +159,10 @@ void ConvAutoencoder<S>::forward_decoder(nn::ConstMatRef<S> z) {
   for (size_t j = decoder_convs_.size(); j-- > 0;) {
     nn::ConvTranspose2d<S>& deconv = decoder_convs_[j];
     nn::MatMap<S> y = decoded_[j].resize(n, deconv.output_shape().size());
-    if (j + 1 == decoder_convs_.size())
-      deconv.forward(decoder_fc_out_.view(), y);
-    else
-      deconv.forward(decoded_[j + 1].view(), y);
-    if (j == 0)
-      nn::Sigmoid<S>().forward(y, y);
-    else
-      relu.forward(y, y);
+    const auto input =
+        j + 1 == decoder_convs_.size() ? decoder_fc_out_.view() : decoded_[j + 1].view();
+    deconv.forward(input, y, /*relu=*/j > 0);
+    if (j == 0) nn::Sigmoid<S>().forward(y, y);
   }
 }
 
@@ -196,8 +190,7 @@ S ConvAutoencoder<S>::train_step(nn::ConstMatRef<S> images, S gradient_scale) {
   for (size_t j = 0; j < layers; ++j) {
     const auto input = j + 1 == layers ? decoder_fc_out_.view() : decoded_[j + 1].view();
     nn::MatMap<S> d_input = next_gradient(n, input.cols());
-    decoder_convs_[j].backward(input, grad_view(), d_input);
-    relu.backward(input, d_input, d_input);
+    decoder_convs_[j].backward(input, grad_view(), d_input, /*relu_input=*/true);
     grad = d_input.data();
     grad_cols = d_input.cols();
   }
@@ -213,8 +206,7 @@ S ConvAutoencoder<S>::train_step(nn::ConstMatRef<S> images, S gradient_scale) {
   for (size_t i = layers; i-- > 1;) {
     const auto input = encoded_[i - 1].view();
     nn::MatMap<S> d_input = next_gradient(n, input.cols());
-    encoder_convs_[i].backward(input, grad_view(), d_input);
-    relu.backward(input, d_input, d_input);
+    encoder_convs_[i].backward(input, grad_view(), d_input, /*relu_input=*/true);
     grad = d_input.data();
     grad_cols = d_input.cols();
   }

@@ -15,7 +15,8 @@
 //
 // Loss (nn/mse_loss.hpp): L = (1 / (N D)) sum (x^ - x)^2 over a batch of N images of D values.
 // Backward runs the chain in reverse with the layers' own backward passes (nn/conv2d.hpp,
-// nn/conv_transpose2d.hpp, nn/linear.hpp); the output gradient through the sigmoid is
+// nn/conv_transpose2d.hpp, nn/linear.hpp), the ReLUs after the convolutions being applied inside
+// the convolution layers (nn/relu_fusion.hpp); the output gradient through the sigmoid is
 //   dL/d(pre-sigmoid) = (2 / (N D)) (x^ - x) x^ (1 - x^).
 // train_step scales the whole gradient by `gradient_scale`, so data-parallel shards of one
 // minibatch (autoencoder_trainer.hpp) each contribute (N_shard / N_batch) of their mean-loss
