@@ -49,6 +49,12 @@ Examples:
 )";
 
 int merge_command(const std::vector<std::string>& shards, const std::string& db_path) {
+  for (const auto& shard : shards) {
+    if (!std::filesystem::is_regular_file(shard)) {
+      std::cerr << "run_experiment merge: '" << shard << "' is not a database file\n";
+      return 2;
+    }
+  }
   corrmp::ResultStore target(db_path);
   for (const auto& shard : shards) {
     const corrmp::MergeCounts counts = corrmp::merge_shard(target, shard);
@@ -136,8 +142,11 @@ int main(int argc, char** argv) {
   options.use_cache = !no_cache;
   corrmp::set_thread_budget(threads);
   // Mesa's llvmpipe rasteriser (the head camera) starts one thread per core
-  // unless told otherwise: keep it within this run's share of the cores.
-  ::setenv("LP_NUM_THREADS", std::to_string(threads).c_str(), 0);
+  // unless told otherwise: keep it within this run's share of the cores (a
+  // sweep's driver renders nothing; its jobs get their own --threads).
+  const auto limit_renderer_threads = [threads] {
+    ::setenv("LP_NUM_THREADS", std::to_string(threads).c_str(), 1);
+  };
   try {
     if (merge->parsed()) return merge_command(shards, merge_db);
     const corrmp::Registries registries = corrmp::builtin_registries();
@@ -147,6 +156,7 @@ int main(int argc, char** argv) {
     }
     if (!sweep_job.empty()) {
       corrmp::install_interrupt_handlers();
+      limit_renderer_threads();
       return corrmp::run_sweep_job(sweep_job[0], parse_index(sweep_job[1]), options, registries);
     }
     sweep_options.run = options;
@@ -159,6 +169,16 @@ int main(int argc, char** argv) {
       sweep_options.emit_dir = emit[1];
     }
     if (!resume.empty()) {
+      if (!config_path.empty() || multirun || print_config) {
+        std::cerr << "run_experiment: --resume takes no config, overrides, -m or --print-config: "
+                     "the sweep's jobs are in the database\n";
+        return 2;
+      }
+      if (!std::filesystem::is_regular_file(options.db_path)) {
+        std::cerr << "run_experiment: no database at '" << options.db_path
+                  << "' to resume from (see --db)\n";
+        return 2;
+      }
       corrmp::ResultStore store(options.db_path);
       const auto sweep = corrmp::stored_sweep(store, resume);
       if (!sweep) {
@@ -167,6 +187,7 @@ int main(int argc, char** argv) {
       }
       corrmp::install_interrupt_handlers();
       sweep_options.executable = this_executable();
+      corrmp::check_sweep_jobs(*sweep, registries);
       return corrmp::drive_sweep(*sweep, sweep_options);
     }
     if (config_path.empty()) {
@@ -191,6 +212,7 @@ int main(int argc, char** argv) {
       return 0;
     }
     corrmp::install_interrupt_handlers();
+    limit_renderer_threads();
     const corrmp::RunResult result = corrmp::run_pipeline(experiment, options);
     if (result.status == "completed") {
       spdlog::info("run {} completed: {}", result.run_id, result.run_dir);

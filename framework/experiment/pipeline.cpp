@@ -207,8 +207,14 @@ RunResult run_pipeline(Experiment& experiment, const RunOptions& options) {
                    options.axes_json};
   result.run_id = store.begin_run(record);
   const std::string started_at = utc_timestamp();
-  const fs::path dir =
-      fs::path(options.out_dir) / experiment.config.experiment.name / std::to_string(result.run_id);
+  // A sweep's runs get their own folder: the shard databases of a Slurm array
+  // all number their runs from 1.
+  const fs::path dir = options.sweep_id.empty()
+                           ? fs::path(options.out_dir) / experiment.config.experiment.name /
+                                 std::to_string(result.run_id)
+                           : fs::path(options.out_dir) / experiment.config.experiment.name /
+                                 options.sweep_id /
+                                 fmt::format("job-{}-run-{}", options.job_index, result.run_id);
   result.run_dir = dir.string();
 
   std::vector<TrialRecord> trials;

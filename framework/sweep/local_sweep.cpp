@@ -9,8 +9,10 @@
 #include <sys/wait.h>
 #include <unistd.h>
 
+#include <cerrno>
 #include <chrono>
 #include <csignal>
+#include <cstring>
 #include <filesystem>
 #include <map>
 #include <stdexcept>
@@ -50,10 +52,12 @@ class SweepLock {
   int fd_ = -1;
 };
 
-// Starts `argv` with stdout and stderr into `log`; the child is killed when
-// this process dies, so no job outlives its driver.
+// Starts `argv` (argv[0] only names it: the child runs this very binary, even
+// when the file was rebuilt meanwhile) with stdout and stderr appended to
+// `log`; the child is killed when this process dies, so no job outlives its
+// driver.
 pid_t spawn(const std::vector<std::string>& argv, const fs::path& log) {
-  const int out = ::open(log.c_str(), O_WRONLY | O_CREAT | O_TRUNC | O_CLOEXEC, 0644);
+  const int out = ::open(log.c_str(), O_WRONLY | O_CREAT | O_APPEND | O_CLOEXEC, 0644);
   if (out < 0) throw std::runtime_error(fmt::format("cannot write {}", log.string()));
   std::vector<char*> args;
   for (const auto& a : argv) args.push_back(const_cast<char*>(a.c_str()));
@@ -69,7 +73,10 @@ pid_t spawn(const std::vector<std::string>& argv, const fs::path& log) {
     if (::getppid() != parent) ::_exit(137);  // the driver died before prctl took effect
     ::dup2(out, STDOUT_FILENO);
     ::dup2(out, STDERR_FILENO);
-    ::execv(args[0], args.data());
+    ::execv("/proc/self/exe", args.data());
+    const std::string reason =
+        std::string("cannot start ") + args[0] + ": " + std::strerror(errno) + "\n";
+    [[maybe_unused]] const ssize_t written = ::write(STDERR_FILENO, reason.data(), reason.size());
     ::_exit(127);
   }
   ::close(out);
@@ -94,7 +101,9 @@ SweepOutcome run_sweep_locally(const Sweep& sweep, const LocalSweepOptions& opti
   const fs::path dir = fs::path(options.out_dir) / "sweeps" / sweep.id;
   outcome.directory = dir.string();
   fs::create_directories(dir);
-  SweepLock lock(dir / "lock");
+  // Beside the database: two drivers of one sweep into one database are
+  // refused whatever their --out.
+  SweepLock lock(options.db_path + ".sweep-" + sweep.id + ".lock");
   const fs::path manifest = dir / "manifest.yaml";
   write_manifest(manifest.string(), sweep);
 
@@ -123,6 +132,7 @@ SweepOutcome run_sweep_locally(const Sweep& sweep, const LocalSweepOptions& opti
   size_t next = 0;
   bool stopping = false;
   std::string last_line;
+  int last_logged = -1;
   while (next < pending.size() || !running.empty()) {
     if (interrupt_requested() && !stopping) {
       stopping = true;
@@ -145,6 +155,20 @@ SweepOutcome run_sweep_locally(const Sweep& sweep, const LocalSweepOptions& opti
       if (!options.use_cache) argv.push_back("--no-cache");
       running[spawn(argv, dir / fmt::format("job-{}.log", job))] = job;
     }
+    // The progress line: redrawn on a terminal, logged when a job ends otherwise.
+    const int finished = outcome.completed + outcome.failed;
+    const double elapsed =
+        std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+    const std::string line =
+        progress_line(sweep, total, outcome.skipped + outcome.completed,
+                      static_cast<int>(running.size()), outcome.failed, elapsed, finished);
+    if (terminal && line != last_line) {
+      fmt::print(stderr, "\r\033[K{}", line);
+    } else if (!terminal && finished + outcome.interrupted != last_logged) {
+      spdlog::info("{}", line);
+    }
+    last_line = line;
+    last_logged = finished + outcome.interrupted;
     if (stopping && running.empty()) break;
     int status = 0;
     const pid_t pid = ::waitpid(-1, &status, WNOHANG);
@@ -154,7 +178,7 @@ SweepOutcome run_sweep_locally(const Sweep& sweep, const LocalSweepOptions& opti
       const int code = WIFEXITED(status) ? WEXITSTATUS(status) : 128 + WTERMSIG(status);
       if (code == 0) {
         ++outcome.completed;
-      } else if (code == 130 || stopping) {
+      } else if (code == 130 || (stopping && code > 128)) {
         ++outcome.interrupted;
       } else {
         ++outcome.failed;
@@ -165,19 +189,14 @@ SweepOutcome run_sweep_locally(const Sweep& sweep, const LocalSweepOptions& opti
     } else {
       std::this_thread::sleep_for(std::chrono::milliseconds(100));
     }
-    const double elapsed =
-        std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
-    const std::string line = progress_line(sweep, total, outcome.skipped + outcome.completed,
-                                           static_cast<int>(running.size()), outcome.failed,
-                                           elapsed, outcome.completed + outcome.failed);
-    if (line != last_line && terminal) {
-      fmt::print(stderr, "\r\033[K{}", line);
-    } else if (line != last_line && pid > 0) {
-      spdlog::info("{}", line);
-    }
-    last_line = line;
   }
-  if (terminal) fmt::print(stderr, "\n");
+  const std::string line =
+      progress_line(sweep, total, outcome.skipped + outcome.completed, 0, outcome.failed, 0.0, 0);
+  if (terminal) {
+    fmt::print(stderr, "\r\033[K{}\n", line);
+  } else if (outcome.completed + outcome.failed + outcome.interrupted != last_logged) {
+    spdlog::info("{}", line);
+  }
   if (stopping) {
     outcome.interrupted += static_cast<int>(pending.size() - next);
   }

@@ -29,7 +29,7 @@ struct SweepOutcome {
 };
 
 // Runs the sweep's pending jobs. A second driver of the same sweep is refused
-// (a lock file in the sweep's directory). Ctrl-C stops the running jobs (they
+// (a lock file beside the database). Ctrl-C stops the running jobs (they
 // mark their runs interrupted); a driver killed outright takes its jobs with
 // it (they are killed when their parent dies), and --resume reruns them.
 SweepOutcome run_sweep_locally(const Sweep& sweep, const LocalSweepOptions& options);

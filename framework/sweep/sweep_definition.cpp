@@ -107,7 +107,8 @@ std::string new_sweep_id(const std::string& name) {
 
 Sweep define_sweep(const std::string& config_path, const std::vector<std::string>& assignments) {
   Sweep sweep;
-  std::vector<std::string> configs{config_path};
+  // Absolute: jobs may run from another directory (--resume, Slurm).
+  std::vector<std::string> configs{fs::absolute(config_path).lexically_normal().string()};
   std::vector<std::string> fixed;
   std::vector<AxisGroup> groups;
   if (is_sweep_file(config_path)) {
@@ -133,9 +134,7 @@ Sweep define_sweep(const std::string& config_path, const std::vector<std::string
     const fs::path base = fs::path(config_path).parent_path();
     configs.clear();
     for (const auto& config : read.configs) {
-      configs.push_back((fs::path(config).is_absolute() ? fs::path(config) : base / config)
-                            .lexically_normal()
-                            .string());
+      configs.push_back(fs::absolute(base / config).lexically_normal().string());
     }
     if (configs.empty()) {
       throw ConfigError(section.find("configs")->where(), "sweep.configs", "no config to run");

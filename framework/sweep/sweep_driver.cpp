@@ -30,17 +30,25 @@ std::string describe_axes(const SweepJob& job) {
 // Writes the manifest, the array script and the folders its tasks write to.
 std::string write_slurm_files(const Sweep& sweep, const SweepDriverOptions& options,
                               const fs::path& dir) {
-  fs::create_directories(dir / "shards");
-  fs::create_directories(dir / "logs");
   SlurmPaths paths;
   paths.run_experiment = options.executable;
   paths.manifest = (dir / "manifest.yaml").string();
   paths.shard_dir = (dir / "shards").string();
   paths.out_dir = options.run.out_dir;
   paths.log_dir = (dir / "logs").string();
+  // Rendered first: resources an #SBATCH line cannot hold are refused before
+  // anything is written.
+  std::string text;
+  try {
+    text = slurm_array_script(sweep, paths);
+  } catch (const std::invalid_argument& e) {
+    throw ConfigError(e.what());
+  }
+  fs::create_directories(dir / "shards");
+  fs::create_directories(dir / "logs");
   write_manifest(paths.manifest, sweep);
   const fs::path script = dir / "sweep.sbatch";
-  std::ofstream(script) << slurm_array_script(sweep, paths);
+  std::ofstream(script) << text;
   if (!fs::exists(script)) throw std::runtime_error("cannot write " + script.string());
   return script.string();
 }
@@ -138,6 +146,10 @@ int run_sweep_job(const std::string& manifest, int index, const RunOptions& opti
       spdlog::info("sweep {} job {} has a completed run already: nothing to do", sweep.id, index);
       return 0;
     }
+    // One process runs a job at a time (the local driver's lock; one array
+    // task per shard), so an earlier attempt still 'running' was killed (a
+    // Slurm time limit, a lost node) on whatever host it ran.
+    mark_job_runs_interrupted(store, sweep.id, index);
   }
   Experiment experiment = load_experiment(job.config_path, job.overrides, registries);
   RunOptions run = options;

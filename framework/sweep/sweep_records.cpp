@@ -27,6 +27,19 @@ std::optional<Sweep> stored_sweep(ResultStore& store, const std::string& id) {
   return parse_manifest(query.column_text(0), store.path() + ": sweep " + id);
 }
 
+int mark_job_runs_interrupted(ResultStore& store, const std::string& sweep_id, int job_index) {
+  int marked = 0;
+  store.transaction([&] {
+    Statement update(store.handle(),
+                     "UPDATE runs SET status = 'interrupted', finished_at = ?, failure = 'an "
+                     "earlier attempt at this sweep job ended without finishing' WHERE sweep_id = "
+                     "? AND job_index = ? AND status = 'running'");
+    update.bind(1, utc_timestamp()).bind(2, sweep_id).bind(3, int64_t{job_index}).run();
+    marked = sqlite3_changes(store.handle());
+  });
+  return marked;
+}
+
 std::set<int> completed_jobs(ResultStore& store, const std::string& sweep_id) {
   Statement query(store.handle(),
                   "SELECT DISTINCT job_index FROM runs WHERE sweep_id = ? AND status = "

@@ -88,6 +88,19 @@ TEST(SweepCommand, RecordsEveryJobWithItsSweepAndAxes) {
       << again.out;
   EXPECT_EQ(store.query_int("SELECT count(*) FROM runs"), 4);
   EXPECT_EQ(run(dir, "--resume no-such-sweep").exit_code, 2);
+  EXPECT_EQ(run(dir, config + " --resume " + id).exit_code, 2);
+}
+
+TEST(SweepCommand, ResumeAndMergeRefuseMissingDatabasesWritingNothing) {
+  TempDir dir;
+  const Outcome resumed = run(dir, "--resume some-sweep");
+  EXPECT_EQ(resumed.exit_code, 2);
+  EXPECT_NE(resumed.out.find("no database at"), std::string::npos) << resumed.out;
+  const std::string merge = std::string(RUN_EXPERIMENT_BIN) + " merge " +
+                            dir.file("missing.sqlite") + " --db " + dir.file("r.sqlite") +
+                            " 2> /dev/null";
+  EXPECT_EQ(WEXITSTATUS(std::system(merge.c_str())), 2);
+  EXPECT_FALSE(std::filesystem::exists(dir.file("r.sqlite")));
 }
 
 TEST(SweepCommand, AKilledSweepResumesToExactlyOneCompletedRunPerJob) {
@@ -194,6 +207,8 @@ TEST(SweepCommand, RunsOnARealSlurmAndMergesTheShardsOnce) {
   ResultStore store(dir.file("r.sqlite"));
   EXPECT_EQ(store.query_int("SELECT count(*) FROM runs WHERE status = 'completed'"), 2);
   EXPECT_EQ(store.query_int("SELECT count(*) FROM sweeps"), 1);
+  // Both shards number their run 1: the run directories still differ.
+  EXPECT_EQ(store.query_int("SELECT count(DISTINCT out_dir) FROM runs"), 2);
   const std::string id = store.query_text("SELECT id FROM sweeps");
   const std::string shards = dir.file("runs/sweeps/" + id + "/shards");
   EXPECT_TRUE(std::filesystem::exists(shards + "/job-0.sqlite"));
@@ -206,6 +221,17 @@ TEST(SweepCommand, RunsOnARealSlurmAndMergesTheShardsOnce) {
   EXPECT_EQ(store.query_int("SELECT count(*) FROM runs"), 2);
   EXPECT_EQ(store.query_int("SELECT count(*) FROM trials"),
             store.query_int("SELECT count(*) FROM trials WHERE run_id IN (SELECT id FROM runs)"));
+}
+
+TEST(SweepCommand, RefusesSlurmResourcesAnSbatchLineCannotHoldWritingNothing) {
+  TempDir dir;
+  dir.write("tiny.yaml", kTiny);
+  const std::string sweep =
+      dir.write("sweep.yaml", "sweep: {name: s, configs: [tiny.yaml], slurm: {time: '1 hour'}}\n");
+  const Outcome outcome = run(dir, sweep + " --emit slurm " + dir.file("emit"));
+  EXPECT_EQ(outcome.exit_code, 2) << outcome.out;
+  EXPECT_NE(outcome.out.find("slurm.time"), std::string::npos) << outcome.out;
+  EXPECT_FALSE(std::filesystem::exists(dir.file("emit")));
 }
 
 TEST(SweepCommand, EmitsTheSlurmFilesWithoutSubmitting) {
