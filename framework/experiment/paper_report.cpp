@@ -76,18 +76,17 @@ std::string interval_text(const MeanInterval& m, double low, double high, bool p
   return text;
 }
 
-// A cell of a metric across runs; rates (percent) have their interval clipped
-// to [0, 1]. Without a paper value the verdict says so.
+// A cell of a metric across runs; its interval is clipped at 0, and rates'
+// (percent) at 1. Without a paper value the verdict says so.
 Cell metric_cell(const std::string& table, const std::string& row, const std::string& group,
                  const std::string& metric, const std::vector<const RunSummary*>& runs,
                  bool percent, const std::optional<double>& paper, double rounding,
                  bool higher_is_better) {
   const MeanInterval m = mean_interval(samples(runs, metric));
   Cell cell{table, row, group, metric, m.count, m.mean, m.low, m.high, "", "", ""};
-  if (percent && m.defined()) {
-    cell.low = std::max(0.0, m.low);
-    cell.high = std::min(1.0, m.high);
-  }
+  // Every metric here is non-negative (rates, errors); rates are at most 1.
+  if (m.defined()) cell.low = std::max(0.0, m.low);
+  if (percent && m.defined()) cell.high = std::min(1.0, m.high);
   cell.ours = interval_text(m, cell.low, cell.high, percent, runs.size());
   if (paper) {
     cell.paper = percent ? fmt::format("{:.0f}%", 100 * *paper) : fmt::format("{:.2f}", *paper);
@@ -454,7 +453,8 @@ ReproductionReport reproduction_report(const ReproductionInputs& inputs) {
   md +=
       "\n## How to read the tables\n\n"
       "Each of our cells is the mean across the runs (seeds) with its 95% confidence interval "
-      "[low, high] (Student t, n - 1 degrees of freedom; rates' intervals clipped to [0, 100]%). "
+      "[low, high] (Student t, n - 1 degrees of freedom; intervals clipped to the values a metric "
+      "can take: errors at 0, rates to [0, 100]%). "
       "With one run there is no interval. A rate per expected correction is averaged over the "
       "runs that expected that correction at least once; (n=k) marks fewer runs than the "
       "group has. The paper's number is beside each cell (assets/paper/tables.yaml). Verdict: "
