@@ -142,10 +142,11 @@ int main(int argc, char** argv) {
   options.use_cache = !no_cache;
   corrmp::set_thread_budget(threads);
   // Mesa's llvmpipe rasteriser (the head camera) starts one thread per core
-  // unless told otherwise: keep it within this run's share of the cores (a
-  // sweep's driver renders nothing; its jobs get their own --threads).
+  // unless told otherwise: keep it within this run's share of the cores,
+  // unless the user set LP_NUM_THREADS (a sweep's driver renders nothing and
+  // sets nothing; its jobs get their own --threads).
   const auto limit_renderer_threads = [threads] {
-    ::setenv("LP_NUM_THREADS", std::to_string(threads).c_str(), 1);
+    ::setenv("LP_NUM_THREADS", std::to_string(threads).c_str(), 0);
   };
   try {
     if (merge->parsed()) return merge_command(shards, merge_db);
