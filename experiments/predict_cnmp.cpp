@@ -5,6 +5,8 @@
 #include <fmt/os.h>
 #include <CLI/CLI.hpp>
 
+#include <cmath>
+
 #include <iostream>
 
 #include "command_line.hpp"
@@ -31,6 +33,10 @@ std::vector<double> parse_numbers(const std::string& text, const char* what) {
     const double value = std::strtod(field.c_str(), &end);
     if (field.empty() || end != field.c_str() + field.size()) {
       throw std::invalid_argument(fmt::format("{} '{}': '{}' is not a number", what, text, field));
+    }
+    if (!std::isfinite(value)) {
+      throw std::invalid_argument(
+          fmt::format("{} '{}': '{}' is not a finite number", what, text, field));
     }
     values.push_back(value);
     start = comma + 1;

@@ -90,6 +90,15 @@ TEST(CnmpTools, BadInputGivesAClearErrorAndNonZeroExit) {
                             dir.file("m.cnmp")),
                 &err, &dir),
             2);
+  // NaN and infinity are refused, not propagated into the prediction.
+  for (const char* args : {"--obs 0,nan,0 --context 1", "--obs 0,inf,0 --context 1",
+                           "--obs 0,0,0 --context nan", "--obs 0,0,0 --context 1 --query nan"}) {
+    EXPECT_EQ(run(fmt::format("{} --model {} {}", PREDICT_CNMP_BIN, dir.file("m.cnmp"), args), &err,
+                  &dir),
+              2)
+        << args;
+    EXPECT_NE(err.find("is not a finite number"), std::string::npos) << args << ": " << err;
+  }
 }
 
 }  // namespace
