@@ -25,7 +25,6 @@
 #include "experiment/pipeline.hpp"
 #include "experiment/registries.hpp"
 #include "store/result_store.hpp"
-#include "store/store_merge.hpp"
 #include "sweep/sweep_definition.hpp"
 #include "sweep/sweep_driver.hpp"
 #include "sweep/sweep_manifest.hpp"
@@ -55,15 +54,7 @@ int merge_command(const std::vector<std::string>& shards, const std::string& db_
       return 2;
     }
   }
-  corrmp::ResultStore target(db_path);
-  for (const auto& shard : shards) {
-    const corrmp::MergeCounts counts = corrmp::merge_shard(target, shard);
-    fmt::print("{}: {} runs added, {} already in {}{}\n", shard, counts.added, counts.present,
-               db_path,
-               counts.unfinished > 0
-                   ? fmt::format(", {} still running (merge again later)", counts.unfinished)
-                   : "");
-  }
+  corrmp::merge_shards(shards, db_path);
   return 0;
 }
 

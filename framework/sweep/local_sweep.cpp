@@ -128,7 +128,6 @@ SweepOutcome run_sweep_locally(const Sweep& sweep, const LocalSweepOptions& opti
   const auto start = std::chrono::steady_clock::now();
   const bool terminal = isatty(STDERR_FILENO) == 1;
   std::map<pid_t, int> running;  // pid -> job index
-  std::vector<int> failed_jobs;
   size_t next = 0;
   bool stopping = false;
   std::string last_line;
@@ -182,7 +181,6 @@ SweepOutcome run_sweep_locally(const Sweep& sweep, const LocalSweepOptions& opti
         ++outcome.interrupted;
       } else {
         ++outcome.failed;
-        failed_jobs.push_back(job);
         spdlog::warn("sweep {}: job {} failed (exit {}); see {}", sweep.id, job, code,
                      (dir / fmt::format("job-{}.log", job)).string());
       }

@@ -4,6 +4,7 @@
 #include <fmt/format.h>
 #include <spdlog/spdlog.h>
 
+#include <algorithm>
 #include <filesystem>
 #include <fstream>
 
@@ -53,21 +54,6 @@ std::string write_slurm_files(const Sweep& sweep, const SweepDriverOptions& opti
   return script.string();
 }
 
-int merge_shards_into(const fs::path& shard_dir, const std::string& db_path) {
-  ResultStore target(db_path);
-  MergeCounts total;
-  for (const auto& entry : fs::directory_iterator(shard_dir)) {
-    if (entry.path().extension() != ".sqlite") continue;
-    const MergeCounts counts = merge_shard(target, entry.path().string());
-    total.added += counts.added;
-    total.present += counts.present;
-    total.unfinished += counts.unfinished;
-  }
-  spdlog::info("merged into {}: {} runs added, {} already there, {} still running", db_path,
-               total.added, total.present, total.unfinished);
-  return 0;
-}
-
 int run_on_slurm(const Sweep& sweep, const SweepDriverOptions& options) {
   const bool emit_only = !options.emit_dir.empty();
   const fs::path dir =
@@ -88,11 +74,28 @@ int run_on_slurm(const Sweep& sweep, const SweepDriverOptions& options) {
                (dir / "shards").string(), options.run.db_path);
     return 0;
   }
-  merge_shards_into(dir / "shards", options.run.db_path);
+  std::vector<std::string> shards;
+  for (const auto& entry : fs::directory_iterator(dir / "shards")) {
+    if (entry.path().extension() == ".sqlite") shards.push_back(entry.path().string());
+  }
+  std::sort(shards.begin(), shards.end());
+  merge_shards(shards, options.run.db_path);
   return submission.exit_code.value_or(1) == 0 ? 0 : 1;
 }
 
 }  // namespace
+
+void merge_shards(const std::vector<std::string>& shards, const std::string& db_path) {
+  ResultStore target(db_path);
+  for (const auto& shard : shards) {
+    const MergeCounts counts = merge_shard(target, shard);
+    fmt::print("{}: {} runs added, {} already in {}{}\n", shard, counts.added, counts.present,
+               db_path,
+               counts.unfinished > 0
+                   ? fmt::format(", {} still running (merge again later)", counts.unfinished)
+                   : "");
+  }
+}
 
 void check_sweep_jobs(const Sweep& sweep, const Registries& registries) {
   if (sweep.jobs.empty()) throw ConfigError("the sweep has no jobs");

@@ -5,6 +5,7 @@
 #pragma once
 
 #include <string>
+#include <vector>
 
 #include "experiment/pipeline.hpp"
 #include "experiment/registries.hpp"
@@ -21,6 +22,10 @@ struct SweepDriverOptions {
   std::string emit_dir;            // --emit slurm DIR: write the files only
   bool wait = false;               // slurm: wait for the array, then merge its shards
 };
+
+// Merges each shard database into `db_path` (store/store_merge.hpp), printing
+// one line per shard.
+void merge_shards(const std::vector<std::string>& shards, const std::string& db_path);
 
 // Loads every job's experiment (throws ConfigError naming the job and its
 // axis values for the first that does not load).

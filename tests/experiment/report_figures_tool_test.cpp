@@ -12,31 +12,16 @@
 #include "config/test_files.hpp"
 #include "plot/interval_chart.hpp"
 #include "recorded_runs.hpp"
+#include "report_tool.hpp"
 
 namespace corrmp {
 namespace {
 
+using testing::read;
+using testing::report_tool;
 using testing::RunSpec;
 using testing::TempDir;
-
-struct ToolOutcome {
-  int exit_code = -1;
-  std::string out, err;
-};
-
-std::string read(const std::string& path) {
-  std::stringstream text;
-  text << std::ifstream(path).rdbuf();
-  return text.str();
-}
-
-ToolOutcome report_tool(const TempDir& dir, const std::string& args) {
-  const std::string out = dir.file("out.txt"), err = dir.file("err.txt");
-  const std::string command = std::string(REPORT_BIN) + " --db " + dir.file("r.sqlite") + " " +
-                              args + " >" + out + " 2>" + err;
-  const int status = std::system(command.c_str());
-  return {WIFEXITED(status) ? WEXITSTATUS(status) : -1, read(out), read(err)};
-}
+using testing::ToolOutcome;
 
 // Sweep "s1" over seeds: corridor_pc (4 and 3 of 4 trials) and corridor_mono
 // (1 and 2 of 4); no run records a directory.

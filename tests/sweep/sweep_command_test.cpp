@@ -34,16 +34,20 @@ struct Outcome {
   std::string out;
 };
 
+std::string read_text(const std::filesystem::path& path) {
+  std::ifstream in(path);
+  std::stringstream text;
+  text << in.rdbuf();
+  return text.str();
+}
+
 Outcome run(const TempDir& dir, const std::string& args) {
   const std::string log = dir.file("output.txt");
   const std::string command = std::string(RUN_EXPERIMENT_BIN) + " " + args + " --db " +
                               dir.file("r.sqlite") + " --out " + dir.file("runs") + " >" + log +
                               " 2>&1";
   const int status = std::system(command.c_str());
-  std::ifstream in(log);
-  std::stringstream text;
-  text << in.rdbuf();
-  return {WIFEXITED(status) ? WEXITSTATUS(status) : -1, text.str()};
+  return {WIFEXITED(status) ? WEXITSTATUS(status) : -1, read_text(log)};
 }
 
 TEST(SweepCommand, BadAxesExitTwoWithOneLineAndWriteNothing) {
@@ -149,13 +153,6 @@ TEST(SweepCommand, AKilledSweepResumesToExactlyOneCompletedRunPerJob) {
                             "'completed'"),
             6);
   EXPECT_EQ(store.query_int("SELECT count(*) FROM runs WHERE status = 'running'"), 0);
-}
-
-std::string read_text(const std::filesystem::path& path) {
-  std::ifstream in(path);
-  std::stringstream text;
-  text << in.rdbuf();
-  return text.str();
 }
 
 // Two jobs needing the same demonstrations at the same time: one collects them,

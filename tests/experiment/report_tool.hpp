@@ -1,0 +1,35 @@
+// Test helper: runs the report tool on a test's database (<dir>/r.sqlite) and
+// returns its exit code, stdout and stderr.
+#pragma once
+
+#include <sys/wait.h>
+
+#include <cstdlib>
+#include <fstream>
+#include <sstream>
+#include <string>
+
+#include "config/test_files.hpp"
+
+namespace corrmp::testing {
+
+struct ToolOutcome {
+  int exit_code = -1;
+  std::string out, err;
+};
+
+inline std::string read(const std::string& path) {
+  std::stringstream text;
+  text << std::ifstream(path).rdbuf();
+  return text.str();
+}
+
+inline ToolOutcome report_tool(const TempDir& dir, const std::string& args) {
+  const std::string out = dir.file("out.txt"), err = dir.file("err.txt");
+  const std::string command = std::string(REPORT_BIN) + " --db " + dir.file("r.sqlite") + " " +
+                              args + " >" + out + " 2>" + err;
+  const int status = std::system(command.c_str());
+  return {WIFEXITED(status) ? WEXITSTATUS(status) : -1, read(out), read(err)};
+}
+
+}  // namespace corrmp::testing
