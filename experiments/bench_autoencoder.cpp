@@ -8,12 +8,17 @@
 // gradient and input gradient. The stride-1 layers run Winograd's algorithm
 // (nn/winograd_conv3x3.hpp) with fewer multiply-adds, so this is an effective rate.
 // Arguments: {batch size, threads}.
+// BM_conv_product compares the two implementations of nn/gemm.hpp on four of the training
+// step's product shapes (which the kernel there was chosen by): Eigen (argument 0) and the
+// AVX-512 kernel (argument 1, Eigen again in builds without AVX-512).
 #include <benchmark/benchmark.h>
 
 #include <numeric>
+#include <string>
 #include <vector>
 
 #include "context/autoencoder/data_parallel_trainer.hpp"
+#include "nn/gemm.hpp"
 
 namespace corrmp {
 namespace {
@@ -60,6 +65,55 @@ BENCHMARK(BM_train_step)
     ->Args({32, 2})
     ->Unit(benchmark::kMillisecond)
     ->UseRealTime();
+
+// C (m x n) (+)= op(A) op(B) with k terms, as a 16-image shard of the paper's architecture runs it.
+struct ProductShape {
+  const char* name;
+  nn::Index m, n, k;
+  nn::Op op_a, op_b;
+  bool accumulate;
+};
+const ProductShape kProductShapes[] = {
+    {"winograd32_forward", 32, 256, 32, nn::Op::kPlain, nn::Op::kPlain, false},
+    {"winograd32_weight_grad", 32, 32, 256, nn::Op::kPlain, nn::Op::kTransposed, true},
+    {"conv2_weight_grad", 64, 288, 128, nn::Op::kPlain, nn::Op::kTransposed, true},
+    {"deconv2_forward", 288, 128, 64, nn::Op::kTransposed, nn::Op::kPlain, false},
+};
+
+void BM_conv_product(benchmark::State& state) {
+  const ProductShape& s = kProductShapes[state.range(0)];
+  const bool ours = state.range(1) == 1;
+  const nn::Mat<float> a = s.op_a == nn::Op::kPlain ? nn::Mat<float>::Random(s.m, s.k)
+                                                    : nn::Mat<float>::Random(s.k, s.m);
+  const nn::Mat<float> b = s.op_b == nn::Op::kPlain ? nn::Mat<float>::Random(s.k, s.n)
+                                                    : nn::Mat<float>::Random(s.n, s.k);
+  nn::Mat<float> c = nn::Mat<float>::Zero(s.m, s.n);
+  nn::Buffer<float> scratch;
+  const auto eigen = [&](const auto& x, const auto& y) {
+    if (s.accumulate)
+      c.noalias() += x * y;
+    else
+      c.noalias() = x * y;
+  };
+  for (auto _ : state) {
+    if (ours)
+      nn::gemm<float>(a, s.op_a, b, s.op_b, c, s.accumulate, scratch);
+    else if (s.op_a == nn::Op::kTransposed)
+      eigen(a.transpose(), b);
+    else if (s.op_b == nn::Op::kTransposed)
+      eigen(a, b.transpose());
+    else
+      eigen(a, b);
+    benchmark::DoNotOptimize(c.data());
+    benchmark::ClobberMemory();
+  }
+  state.SetLabel(std::string(s.name) + (ours ? " nn::gemm" : " Eigen"));
+  state.counters["GFLOP/s"] = benchmark::Counter(
+      2.0 * static_cast<double>(s.m * s.n * s.k) * static_cast<double>(state.iterations()) / 1e9,
+      benchmark::Counter::kIsRate);
+}
+
+BENCHMARK(BM_conv_product)->ArgsProduct({{0, 1, 2, 3}, {0, 1}});
 
 }  // namespace
 }  // namespace corrmp

@@ -215,8 +215,10 @@ int main(int argc, char** argv) {
     std::cerr << e.what() << "\n";
     return 2;
   } catch (const corrmp::StoreError& e) {
+    // A database that cannot be used (damaged, a directory, not SQLite) is bad input: it is
+    // refused before a run is recorded, like a bad config.
     std::cerr << "run_experiment: " << e.what() << "\n";
-    return 1;
+    return 2;
   } catch (const std::exception& e) {
     std::cerr << "run_experiment: " << e.what() << "\n";
     return 1;

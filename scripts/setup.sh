@@ -17,6 +17,7 @@ PACKAGES=(
   libgtest-dev libgmock-dev
   libbenchmark-dev
   clang-format
+  clang-14 libclang-rt-14-dev  # scripts/fuzz: clang with libFuzzer and the sanitizer runtimes
   slurm-wlm munge iproute2  # the sweep tests' single-node Slurm (tests/support/local_slurm.sh)
 )
 

@@ -30,10 +30,15 @@ class BatchSampler {
     int longest = 0;
     for (const auto& t : data) longest = std::max(longest, static_cast<int>(t.xy.rows()));
     permutation_.resize(longest);
-    observations_.resize(p.batch_size * p.max_observations, a.d_x + a.d_y);
+    // A draw never takes more points than a trajectory has (n <= T - 1, n + m <= T), so the
+    // buffers hold at most that: max_targets = 1e9 means "all points", not 1e9 rows.
+    const Eigen::Index batch = p.batch_size;
+    const Eigen::Index max_n = std::max(1, std::min(p.max_observations, longest - 1));
+    const Eigen::Index max_m = std::max(1, std::min(p.max_targets, longest));
+    observations_.resize(batch * max_n, a.d_x + a.d_y);
     contexts_.resize(p.batch_size, a.d_context);
-    target_x_.resize(p.batch_size * p.max_targets, a.d_x);
-    target_y_.resize(p.batch_size * p.max_targets, a.d_y);
+    target_x_.resize(batch * max_m, a.d_x);
+    target_y_.resize(batch * max_m, a.d_y);
     counts_.observations.resize(p.batch_size);
     counts_.targets.resize(p.batch_size);
   }

@@ -33,7 +33,8 @@ struct CnmpTrainingParams {
   template <class Fields>
   void describe(Fields& f) {
     f("updates", updates, "Adam updates (the paper: 10M per model)", at_least(1));
-    f("batch_size", batch_size, "demonstrations per update (1 is the original CNMP)", at_least(1));
+    f("batch_size", batch_size, "demonstrations per update (1 is the original CNMP)",
+      in_range(1, 1 << 20));
     f("max_observations", max_observations, "observations per update: uniform in 1..this",
       at_least(1));
     f("max_targets", max_targets, "targets per update: uniform in 1..this", at_least(1));
@@ -107,6 +108,12 @@ double scheduled_learning_rate(const CnmpTrainingParams& params, int64_t update)
 
 // Mean Euclidean distance between rows of two equally shaped matrices.
 double mean_row_distance(const Eigen::MatrixXd& a, const Eigen::MatrixXd& b);
+
+// Peak memory of training with these sizes, in bytes (a load-time estimate: batches,
+// activations and their gradients, weights with Adam's moments). `longest` is the longest
+// trajectory when known (it caps the points per demonstration), else 0.
+double cnmp_training_bytes(const CnmpArchitecture& architecture, const CnmpTrainingParams& params,
+                           int64_t longest);
 
 // Fits the normalisers to `train` and trains the model. Without validation
 // data the final weights are kept. `label` names the progress bar.

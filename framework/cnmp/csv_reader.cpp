@@ -8,10 +8,10 @@
 #include <charconv>
 #include <cmath>
 #include <filesystem>
-#include <fstream>
-#include <iterator>
 #include <map>
 #include <sstream>
+
+#include "core/file_read.hpp"
 
 namespace corrmp {
 namespace {
@@ -62,10 +62,12 @@ std::string read_text(const std::string& path) {
   if (std::filesystem::is_directory(path, ec)) {
     throw DataError(path + ": is a directory, expected a CSV file");
   }
-  std::ifstream in(path, std::ios::binary);
-  if (!in) throw DataError(path + ": cannot open file for reading");
-  std::string text((std::istreambuf_iterator<char>(in)), std::istreambuf_iterator<char>());
-  if (in.bad()) throw DataError(path + ": error while reading the file");
+  std::string text;
+  try {
+    text = read_whole_file(path);  // a device, a pipe or a failing read: named, not hung
+  } catch (const FileError& e) {
+    throw DataError(e.what());
+  }
   if (text.compare(0, 3, "\xEF\xBB\xBF") == 0) text.erase(0, 3);  // UTF-8 byte order mark
   return text;
 }

@@ -19,9 +19,9 @@ struct CurveFamilyParams {
 
   template <class Fields>
   void describe(Fields& f) {
-    f("train", train, "number of training curves", at_least(1));
-    f("validation", validation, "number of validation curves", at_least(0));
-    f("time_steps", time_steps, "points per curve", at_least(2));
+    f("train", train, "number of training curves", in_range(1, 1000000));
+    f("validation", validation, "number of validation curves", in_range(0, 1000000));
+    f("time_steps", time_steps, "points per curve", in_range(2, 100000));
     f("context_min", context_min, "smallest context value drawn");
     f("context_max", context_max, "largest context value drawn");
     f("noise", noise, "standard deviation of Gaussian noise added to y", at_least(0.0));
@@ -32,11 +32,13 @@ double curve_family_value(double context, double t);
 
 class CurveFamily : public DemonstrationSource {
  public:
-  explicit CurveFamily(const CurveFamilyParams& params) : params_(params) {}
+  explicit CurveFamily(const CurveFamilyParams& params);
   DemonstrationSplit collect(Environment* environment, Rng& rng) override;
   std::vector<std::string> segments() const override { return {"full"}; }
   bool provides_contexts() const override { return true; }
   Demonstration make(double context, Rng& rng) const;
+  std::vector<MemoryNeed> memory_needs() const override;
+  int64_t longest_trajectory() const override { return params_.time_steps; }
 
  private:
   CurveFamilyParams params_;

@@ -10,11 +10,11 @@
 #include <cstdint>
 #include <cstring>
 #include <filesystem>
-#include <fstream>
-#include <iterator>
 #include <limits>
 #include <map>
 #include <type_traits>
+
+#include "core/file_read.hpp"
 
 namespace corrmp {
 namespace {
@@ -190,10 +190,12 @@ std::string read_file_bytes(const std::string& path) {
   if (std::filesystem::is_directory(path, ec)) {
     throw DataError(path + ": is a directory, expected a .npy file");
   }
-  std::ifstream in(path, std::ios::binary);
-  if (!in) throw DataError(path + ": cannot open file for reading");
-  std::string bytes((std::istreambuf_iterator<char>(in)), std::istreambuf_iterator<char>());
-  if (in.bad()) throw DataError(path + ": error while reading the file");
+  std::string bytes;
+  try {
+    bytes = read_whole_file(path);  // a device, a pipe or a failing read: named, not hung
+  } catch (const FileError& e) {
+    throw DataError(e.what());
+  }
   return bytes;
 }
 

@@ -14,6 +14,7 @@
 #include "core/config/config_node.hpp"
 #include "core/config/config_reader.hpp"
 #include "core/file_lock.hpp"
+#include "core/parameter_error.hpp"
 
 namespace corrmp {
 
@@ -32,6 +33,15 @@ std::string params_text(const AutoencoderParams& params) {
 AutoencoderContext::AutoencoderContext(const AutoencoderContextParams& params, uint64_t seed)
     : params_(params), seed_(seed) {
   params_.network.architecture().validate();
+  if (params_.network.channels == 2) {
+    throw ParameterError("network.channels", "must be 3 (RGB) or 1 (grey), not 2");
+  }
+}
+
+std::vector<MemoryNeed> AutoencoderContext::memory_needs() const {
+  return {{params_.network.training_bytes(), "network.batch_size",
+           fmt::format("training the autoencoder ({}, batch_size {})",
+                       params_.network.architecture().summary(), params_.network.batch_size)}};
 }
 
 AutoencoderContext::~AutoencoderContext() = default;
@@ -74,7 +84,11 @@ void AutoencoderContext::fit(const std::vector<Demonstration>& demos, const Extr
   // the others wait for it and reuse it.
   std::optional<FileLock> lock;
   if (!path.empty()) lock.emplace(path + ".lock");
-  if (!path.empty() && std::filesystem::exists(path)) {
+  // A cached model that cannot be used (damaged, truncated, a directory in
+  // its place) is reported once and trained again, never fatal.
+  std::error_code error;
+  if (!path.empty() && std::filesystem::symlink_status(path, error).type() !=
+                           std::filesystem::file_type::not_found) {
     try {
       model_ = std::make_unique<ConvAutoencoder<float>>(load_autoencoder(path));
       spdlog::info("reusing the trained autoencoder {}", path);
@@ -91,8 +105,12 @@ void AutoencoderContext::fit(const std::vector<Demonstration>& demos, const Extr
     spdlog::info("autoencoder: train MSE {:.3g}, test MSE {:.3g}, {:.1f} s", report.train_mse,
                  report.test_mse, report.seconds);
     if (!path.empty()) {
-      std::filesystem::create_directories(cache.directory);
-      save_autoencoder(*model_, path);
+      try {
+        std::filesystem::create_directories(cache.directory);
+        save_autoencoder(*model_, path);
+      } catch (const std::exception& e) {  // the cache only saves time
+        spdlog::warn("{}; the trained autoencoder is not cached", e.what());
+      }
     }
   }
   lock.reset();

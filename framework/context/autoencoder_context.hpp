@@ -40,6 +40,7 @@ class AutoencoderContext : public ContextExtractor {
   std::vector<std::string> segments() const override { return params_.segments; }
   std::vector<std::string> state_names() const override;
   bool needs_images() const override { return true; }
+  std::vector<MemoryNeed> memory_needs() const override;
   void write_outputs(const std::string& directory,
                      const std::vector<Demonstration>& demos) override;
   std::vector<std::pair<std::string, double>> metrics() const override;

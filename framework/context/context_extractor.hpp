@@ -8,6 +8,7 @@
 #include <string>
 #include <vector>
 
+#include "core/memory_need.hpp"
 #include "core/seeds.hpp"
 #include "data/demonstrations.hpp"
 #include "data/observation.hpp"
@@ -36,6 +37,8 @@ class ContextExtractor {
   // The observation state values it reads (checked at load against what the
   // environment observes).
   virtual std::vector<std::string> state_names() const { return {}; }
+  // The memory fitting will take with the declared sizes (checked at load).
+  virtual std::vector<MemoryNeed> memory_needs() const { return {}; }
   // Whether observations must include camera images.
   virtual bool needs_images() const = 0;
   // Writes what a researcher looks at (figures, models) into the run directory.

@@ -3,7 +3,8 @@
 // self-registration is avoided because the linker drops it from static
 // libraries. Unknown name: a ConfigError listing the valid names. Duplicate
 // name: std::logic_error at start-up. A factory's std::invalid_argument
-// becomes a ConfigError at the component's section. docs/architecture.md, "Components".
+// becomes a ConfigError at the component's section, a ParameterError one at
+// the value it names. docs/architecture.md, "Components".
 #pragma once
 
 #include <fmt/format.h>
@@ -18,6 +19,7 @@
 #include "core/config/config_reader.hpp"
 #include "core/config/did_you_mean.hpp"
 #include "core/config/field_docs.hpp"
+#include "core/parameter_error.hpp"
 
 namespace corrmp {
 
@@ -53,6 +55,11 @@ class Registry {
                 reader.finish();
                 try {
                   return std::unique_ptr<Base>(make(params, context));
+                } catch (const ParameterError& e) {
+                  const ConfigNode& value = node_at(node, e.key());
+                  const bool stated = value.where().file != "<default>";
+                  throw ConfigError(stated ? value.where() : node.where(), path + "." + e.key(),
+                                    e.what());
                 } catch (const std::invalid_argument& e) {
                   // A component refusing its parameters is a config error too.
                   throw ConfigError(node.where(), path, e.what());

@@ -10,6 +10,7 @@
 #include <string>
 #include <vector>
 
+#include "core/memory_need.hpp"
 #include "core/seeds.hpp"
 #include "data/observation.hpp"
 
@@ -81,6 +82,10 @@ class DemonstrationSource {
   // Goes into the demonstration cache key: bump it whenever the same
   // parameters would now give different demonstrations.
   virtual std::string version() const { return "1"; }
+  // The memory the collected demonstrations will take with the declared sizes
+  // (checked at load), and their longest trajectory when the config fixes it (else 0).
+  virtual std::vector<MemoryNeed> memory_needs() const { return {}; }
+  virtual int64_t longest_trajectory() const { return 0; }
 };
 
 }  // namespace corrmp

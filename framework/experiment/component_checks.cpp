@@ -5,9 +5,15 @@
 
 #include <algorithm>
 
+#include "core/memory_need.hpp"
+#include "core/parameter_error.hpp"
+
 namespace corrmp {
 
 namespace {
+
+// The share of the machine's memory a run may plan to use.
+constexpr double kMemoryShare = 0.75;
 
 bool contains(const std::vector<std::string>& names, const std::string& name) {
   return std::find(names.begin(), names.end(), name) != names.end();
@@ -146,6 +152,45 @@ void check_expert(const Experiment& e) {
                                 e.config.demonstrations->type, e.config.environment->type));
 }
 
+struct LocatedNeed {
+  MemoryNeed need;
+  const ComponentSpec* spec;
+};
+
+// The declared sizes must fit in this machine's memory: refused at load, naming the parameter
+// behind the largest need, rather than failing mid-run (or taking the machine down).
+void check_memory(const Experiment& e) {
+  std::vector<LocatedNeed> needs;
+  const int64_t longest = e.demonstrations ? e.demonstrations->longest_trajectory() : 0;
+  if (e.demonstrations) {
+    for (auto& need : e.demonstrations->memory_needs())
+      needs.push_back({need, &*e.config.demonstrations});
+  }
+  if (e.context_extractor) {
+    for (auto& need : e.context_extractor->memory_needs())
+      needs.push_back({need, &*e.config.context});
+  }
+  if (e.policy) {
+    for (auto& need : e.policy->memory_needs(longest)) needs.push_back({need, &*e.config.policy});
+  }
+  if (needs.empty()) return;
+  double total = 0.0;
+  for (const auto& n : needs) total += n.need.bytes;
+  const double available = physical_memory_bytes();
+  if (available <= 0.0 || total <= kMemoryShare * available) return;
+  const auto largest =
+      std::max_element(needs.begin(), needs.end(),
+                       [](const auto& a, const auto& b) { return a.need.bytes < b.need.bytes; });
+  const ConfigNode& value = node_at(*largest->spec->node, largest->need.key);
+  const bool stated = value.where().file != "<default>";
+  throw ConfigError(stated ? value.where() : largest->spec->node->find("type")->where(),
+                    largest->spec->path + "." + largest->need.key,
+                    fmt::format("the declared sizes need about {} of memory, {} of it for {}; "
+                                "this machine has {}: reduce them",
+                                format_bytes(total), format_bytes(largest->need.bytes),
+                                largest->need.what, format_bytes(available)));
+}
+
 }  // namespace
 
 void check_components(const Experiment& experiment) {
@@ -158,6 +203,7 @@ void check_components(const Experiment& experiment) {
   if (experiment.environment && experiment.demonstrations && experiment.policy) {
     check_expert(experiment);
   }
+  check_memory(experiment);
 }
 
 }  // namespace corrmp

@@ -3,18 +3,25 @@
 
 #include <fmt/format.h>
 
+#include <spdlog/spdlog.h>
+
 #include <cstring>
 #include <filesystem>
-#include <fstream>
 #include <opencv2/imgcodecs.hpp>
-#include <sstream>
 
 #include "core/atomic_file.hpp"
+#include "core/file_read.hpp"
 #include "core/seeds.hpp"
 
 namespace corrmp {
 
 namespace {
+
+// An exception's message without the path, when it is a FileError that has one.
+std::string problem_of(const std::exception& e) {
+  if (const auto* file_error = dynamic_cast<const FileError*>(&e)) return file_error->problem();
+  return e.what();
+}
 
 constexpr char kMagic[4] = {'C', 'M', 'P', 'D'};
 constexpr uint32_t kVersion = 3;  // 3: the camera model of each image
@@ -181,7 +188,7 @@ Demonstration read_demo(Reader& r) {
 
 }  // namespace
 
-void save_demonstrations(const std::string& path, const DemonstrationSplit& demos) {
+bool save_demonstrations(const std::string& path, const DemonstrationSplit& demos) {
   Writer w;
   w.data().append(kMagic, 4);
   w.pod(kVersion);
@@ -191,24 +198,36 @@ void save_demonstrations(const std::string& path, const DemonstrationSplit& demo
     for (const auto& demo : *set) write_demo(w, demo);
   }
   w.pod(fnv1a64(w.data()));
-  std::filesystem::create_directories(std::filesystem::path(path).parent_path());
-  write_file_atomically(path, w.data());
+  try {
+    std::filesystem::create_directories(std::filesystem::path(path).parent_path());
+    write_file_atomically(path, w.data());
+    return true;
+  } catch (const std::exception& e) {
+    spdlog::warn("demonstration cache '{}' not written: {}", path, problem_of(e));
+    return false;
+  }
 }
 
 std::optional<DemonstrationSplit> load_demonstrations(const std::string& path) {
-  std::ifstream in(path, std::ios::binary);
-  if (!in) return std::nullopt;
-  std::stringstream buffer;
-  buffer << in.rdbuf();
-  const std::string data = buffer.str();
-  const auto corrupt = [&](const char* what) {
+  const auto corrupt = [&](const std::string& what) {
     return std::runtime_error(fmt::format("demonstration cache '{}': {}", path, what));
   };
-  if (data.size() < 16 || data.compare(0, 4, kMagic, 4) != 0) throw corrupt("not a cache file");
+  std::error_code error;
+  const auto status = std::filesystem::symlink_status(path, error);
+  if (status.type() == std::filesystem::file_type::not_found) return std::nullopt;
+  std::string data;
+  try {
+    data = read_whole_file(path);
+  } catch (const FileError& e) {
+    throw corrupt(e.problem());  // "is a directory", "cannot open for reading: ..."
+  }
+  if (data.size() < 16 || data.compare(0, 4, kMagic, 4) != 0) {
+    throw corrupt(data.empty() ? "empty file" : "not a cache file");
+  }
   uint64_t stored = 0;
   std::memcpy(&stored, data.data() + data.size() - 8, 8);
   const std::string body = data.substr(0, data.size() - 8);
-  if (fnv1a64(body) != stored) throw corrupt("checksum mismatch");
+  if (fnv1a64(body) != stored) throw corrupt("checksum mismatch (truncated or damaged)");
   Reader r(body, path);
   r.pod<uint32_t>();  // magic
   if (r.pod<uint32_t>() != kVersion) throw corrupt("unsupported version");

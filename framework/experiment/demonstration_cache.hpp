@@ -21,9 +21,16 @@
 
 namespace corrmp {
 
-void save_demonstrations(const std::string& path, const DemonstrationSplit& demos);
-// The cached demonstrations, or nothing when the file is missing; throws
-// std::runtime_error naming the file when it is corrupt.
+// Writes the cache atomically (core/atomic_file.hpp). A cache only saves
+// time: one that cannot be written (a full disk, a directory in its place) is
+// a warning naming the file, and false is returned; the run goes on.
+bool save_demonstrations(const std::string& path, const DemonstrationSplit& demos);
+// The cached demonstrations, or nothing when the file is missing; throws a
+// one-line std::runtime_error "demonstration cache '<path>': <problem>" when
+// it cannot be used: a directory or other non-regular file, unreadable, empty,
+// not a cache file, a checksum mismatch (truncated or damaged), an unsupported
+// version. The caller reports it and collects again. Temporary files of a
+// killed writer are never read (core/atomic_file.hpp).
 std::optional<DemonstrationSplit> load_demonstrations(const std::string& path);
 
 }  // namespace corrmp

@@ -3,10 +3,8 @@
 
 #include <fmt/format.h>
 
-#include <algorithm>
-#include <cctype>
-
 #include "core/config/config_loader.hpp"
+#include "core/parameter_error.hpp"
 #include "core/seeds.hpp"
 #include "experiment/component_checks.hpp"
 
@@ -15,14 +13,12 @@ namespace corrmp {
 namespace {
 
 void check_name(const ConfigNode& root, const std::string& name) {
-  const bool valid = !name.empty() && std::all_of(name.begin(), name.end(), [](char c) {
-    return std::isalnum(static_cast<unsigned char>(c)) || c == '_' || c == '-' || c == '.';
-  }) && name[0] != '.';
-  if (!valid) {
+  if (!is_safe_file_name(name)) {
     const ConfigNode* node = root.find("experiment")->find("name");
-    throw ConfigError(
-        node->where(), "experiment.name",
-        fmt::format("'{}' is not a valid name: use letters, digits, '_', '-', '.'", name));
+    throw ConfigError(node->where(), "experiment.name",
+                      fmt::format("'{}' is not a valid name: use up to 128 letters, digits, '_', "
+                                  "'-', '.', not starting with '.'",
+                                  name));
   }
 }
 

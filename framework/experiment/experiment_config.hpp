@@ -28,7 +28,7 @@ struct EvaluationConfig {
 
   template <class Fields>
   void describe(Fields& f) {
-    f("trials", trials, "number of evaluation trials", at_least(1));
+    f("trials", trials, "number of evaluation trials", in_range(1, 100000));
     f("seed", seed,
       "seed of the evaluation scenarios, a stream disjoint from everything used in training");
   }

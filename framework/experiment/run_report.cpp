@@ -122,8 +122,11 @@ std::string report_markdown(const std::vector<RunSummary>& runs, const ReportFor
   std::vector<ErrorColumn> errors = error_columns(runs);
   for (const auto& row : paper) {  // the paper's errors get their columns too
     for (const auto& [mean, text] : row.errors) {
-      const bool known = std::any_of(errors.begin(), errors.end(),
-                                     [&](const ErrorColumn& c) { return c.mean() == mean; });
+      const bool known =
+          std::any_of(errors.begin(), errors.end(),
+                      // A structured binding is captured through an
+                      // init-capture: C++17 (clang) allows no other way.
+                      [&key = mean](const ErrorColumn& c) { return c.mean() == key; });
       const auto at = mean.find(kErrorMarker);
       if (!known) errors.push_back({mean.substr(0, at), mean.substr(at + kErrorMarker.size())});
     }

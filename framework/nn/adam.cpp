@@ -32,36 +32,50 @@ void Adam<S>::zero_grad() {
 template <class S>
 void Adam<S>::step() {
   const ScopedFlushDenormals flush_denormals;
+  begin_step();
+  for (std::size_t k = 0; k < params_.size(); ++k) update_entries(k, 0, params_[k].size());
+}
+
+template <class S>
+void Adam<S>::begin_step() {
   ++step_count_;
   const double t = static_cast<double>(step_count_);
+  step_size_ = static_cast<S>(options_.learning_rate / (1.0 - std::pow(options_.beta1, t)));
+  inv_sqrt_bc2_ = static_cast<S>(1.0 / std::sqrt(1.0 - std::pow(options_.beta2, t)));
+}
+
+template <class S>
+void Adam<S>::update_range(std::size_t k, Index begin, Index end) {
+  const ScopedFlushDenormals flush_denormals;
+  update_entries(k, begin, end);
+}
+
+template <class S>
+void Adam<S>::update_entries(std::size_t k, Index first, Index last) {
   const S beta1 = static_cast<S>(options_.beta1);
   const S beta2 = static_cast<S>(options_.beta2);
-  const S step_size = static_cast<S>(options_.learning_rate / (1.0 - std::pow(options_.beta1, t)));
-  const S inv_sqrt_bc2 = static_cast<S>(1.0 / std::sqrt(1.0 - std::pow(options_.beta2, t)));
+  const S step_size = step_size_, inv_sqrt_bc2 = inv_sqrt_bc2_;
   const S eps = static_cast<S>(options_.eps);
   const S decay = static_cast<S>(options_.weight_decay);
   // Work in chunks so m, v, g and p stay in L1 cache across the three array statements.
-  constexpr Index kChunk = 2048;
-  for (std::size_t k = 0; k < params_.size(); ++k) {
-    const Parameter<S>& p = params_[k];
-    S* value = p.value;
-    S* grad = p.grad;
-    S* m_data = first_moment_[k].data();
-    S* v_data = second_moment_[k].data();
-    const Index size = p.size();
-    for (Index begin = 0; begin < size; begin += kChunk) {
-      const Index n = std::min(kChunk, size - begin);
-      Eigen::Map<Eigen::Array<S, Eigen::Dynamic, 1>> x(value + begin, n), g(grad + begin, n),
-          m(m_data + begin, n), v(v_data + begin, n);
-      if (decay != S(0)) {
-        m = beta1 * m + (S(1) - beta1) * (g + decay * x);
-        v = beta2 * v + (S(1) - beta2) * (g + decay * x).square();
-      } else {
-        m = beta1 * m + (S(1) - beta1) * g;
-        v = beta2 * v + (S(1) - beta2) * g.square();
-      }
-      x -= step_size * m / (v.sqrt() * inv_sqrt_bc2 + eps);
+  constexpr Index kChunk = kRangeAlignment;
+  const Parameter<S>& p = params_[k];
+  S* value = p.value;
+  S* grad = p.grad;
+  S* m_data = first_moment_[k].data();
+  S* v_data = second_moment_[k].data();
+  for (Index begin = first; begin < last; begin += kChunk) {
+    const Index n = std::min(kChunk, last - begin);
+    Eigen::Map<Eigen::Array<S, Eigen::Dynamic, 1>> x(value + begin, n), g(grad + begin, n),
+        m(m_data + begin, n), v(v_data + begin, n);
+    if (decay != S(0)) {
+      m = beta1 * m + (S(1) - beta1) * (g + decay * x);
+      v = beta2 * v + (S(1) - beta2) * (g + decay * x).square();
+    } else {
+      m = beta1 * m + (S(1) - beta1) * g;
+      v = beta2 * v + (S(1) - beta2) * g.square();
     }
+    x -= step_size * m / (v.sqrt() * inv_sqrt_bc2 + eps);
   }
 }
 

@@ -12,6 +12,7 @@
 // decayed second moments of late training make it several times slower on x86.
 #pragma once
 
+#include <cstddef>
 #include <cstdint>
 #include <vector>
 
@@ -36,8 +37,19 @@ class Adam {
 
   /// Sets every parameter gradient to zero.
   void zero_grad();
-  /// One update of every parameter from its accumulated gradient.
+  /// One update of every parameter from its accumulated gradient: begin_step(), then
+  /// update_range over all entries.
   void step();
+  /// Starts the next step for update_range (advances step_count()).
+  void begin_step();
+  /// Updates entries [begin, end) of parameter k as step() does in the step begun last. Calls on
+  /// disjoint ranges may run on different threads at once. With begin a multiple of
+  /// kRangeAlignment and end one too or the parameter's size, the result is exactly step()'s,
+  /// so splitting a step among threads that way does not change it (other ranges can differ in
+  /// the last bit: the compiler contracts the scalar and the vectorised code differently).
+  void update_range(std::size_t k, Index begin, Index end);
+  /// step() updates each parameter in pieces of this many entries, from its first.
+  static constexpr Index kRangeAlignment = 2048;
 
   std::int64_t step_count() const { return step_count_; }
   const AdamOptions& options() const { return options_; }
@@ -50,6 +62,11 @@ class Adam {
   std::vector<Vec<S>> first_moment_;   // m, one vector per parameter
   std::vector<Vec<S>> second_moment_;  // v, one vector per parameter
   std::int64_t step_count_ = 0;
+  // The step's factors (begin_step): lr / (1 - beta1^t) and 1 / sqrt(1 - beta2^t).
+  S step_size_ = S(0);
+  S inv_sqrt_bc2_ = S(0);
+
+  void update_entries(std::size_t k, Index begin, Index end);  // without the denormal scope
 };
 
 extern template class Adam<float>;

@@ -5,6 +5,7 @@
 
 #include "nn/channel_major.hpp"
 #include "nn/check.hpp"
+#include "nn/gemm.hpp"
 #include "nn/im2col.hpp"
 #include "nn/relu_fusion.hpp"
 
@@ -45,13 +46,13 @@ void Conv2d<S>::forward(ConstMatRef<S> x, MatRef<S> y, bool relu) {
       StridedMap<S> out(y_first + chunk.row_begin * geometry_.out_width, cout, columns,
                         Eigen::OuterStride<>(positions));
       out.colwise() = bias_;
-      out.noalias() += weight_ * cols;
+      gemm<S>(weight_, Op::kPlain, cols, Op::kPlain, out, /*accumulate=*/true, transposed_);
       if (relu) relu_in_place(out);
       return;
     }
     MatMap<S> out = outputs_.resize(cout, columns);
     out.colwise() = bias_;
-    out.noalias() += weight_ * cols;
+    gemm<S>(weight_, Op::kPlain, cols, Op::kPlain, out, /*accumulate=*/true, transposed_);
     if (relu) relu_in_place(out);
     scatter_channel_major(out.data(), chunk.images, cout, positions, y_first, y.outerStride());
   });
@@ -86,11 +87,13 @@ void Conv2d<S>::backward_chunks(ConstMatRef<S> x, ConstMatRef<S> dy, S* dx, Inde
     if (chunk.images > 1)
       gather_channel_major(dy_first, dy.outerStride(), chunk.images, cout, positions,
                            outputs_.view().data());
-    weight_grad_.noalias() += dy_chunk * cols.transpose();
+    gemm<S>(dy_chunk, Op::kPlain, cols, Op::kTransposed, weight_grad_, /*accumulate=*/true,
+            transposed_);
     bias_grad_.noalias() += dy_chunk.rowwise().sum();
     if (dx == nullptr) return;
     MatMap<S> col_grads = column_grads_.resize(geometry_.patch_size(), columns);
-    col_grads.noalias() = weight_.transpose() * dy_chunk;
+    gemm<S>(weight_, Op::kTransposed, dy_chunk, Op::kPlain, col_grads, /*accumulate=*/false,
+            transposed_);
     col2im_chunk(col_grads.data(), geometry_, chunk, dx, dx_stride);
     if (relu_input && chunk.row_end == geometry_.out_height)  // the chunk's images are complete
       mask_by_relu_output(x.row(chunk.image_begin).data(), x.outerStride(), chunk.images,

@@ -17,10 +17,11 @@
 // (nn/winograd_conv3x3.hpp), with 2.25 times fewer multiply-adds.
 // Initialisation follows torch.nn.Conv2d: W, b ~ U(-1/sqrt(Cin k k), 1/sqrt(Cin k k)), W first.
 // The layer owns only scratch buffers, sized on first use; backward takes the forward input
-// again and recomputes U (cheap next to the products). The layer itself allocates nothing after
-// the first call, but products too large for Eigen's 128 KB stack blocking limit (the
-// autoencoder's 32x32 layers) let Eigen allocate its GEMM workspace: a few allocations per
-// call, negligible next to the millions of multiply-adds of such a product.
+// again and recomputes U (cheap next to the products). The products run in nn/gemm.hpp. The
+// layer itself allocates nothing after the first call, but where Eigen computes the products
+// (double, or float without AVX-512, nn/gemm.hpp) those too large for Eigen's 128 KB stack
+// blocking limit (the autoencoder's 32x32 layers) let Eigen allocate its GEMM workspace: a few
+// allocations per call, negligible next to the millions of multiply-adds of such a product.
 #pragma once
 
 #include <optional>
@@ -89,6 +90,7 @@ class Conv2d {
   Buffer<S> columns_;                           // U of one chunk
   Buffer<S> column_grads_;                      // W^T dY of one chunk
   Buffer<S> outputs_;                           // Y or dY of one chunk, channel-major
+  Buffer<S> transposed_;                        // U^T of one chunk (nn/gemm.hpp's scratch)
   std::optional<WinogradConv3x3<S>> winograd_;  // for kernel 3, stride 1, padding 1
 };
 

@@ -8,6 +8,7 @@
 
 #include "nn/channel_major.hpp"
 #include "nn/check.hpp"
+#include "nn/gemm.hpp"
 #include "nn/im2col.hpp"
 #include "nn/relu_fusion.hpp"
 
@@ -86,7 +87,7 @@ void ConvTranspose2d<S>::forward(ConstMatRef<S> x, MatRef<S> y, bool relu) {
     const ConstStridedMap<S> x_chunk =
         channel_major_chunk(geometry_, chunk, cin, x.data(), x.outerStride(), channel_major_);
     MatMap<S> cols = columns_.resize(geometry_.patch_size(), chunk.columns(geometry_));
-    cols.noalias() = weight_.transpose() * x_chunk;
+    gemm<S>(weight_, Op::kTransposed, x_chunk, Op::kPlain, cols, /*accumulate=*/false, transposed_);
     col2im_chunk(cols.data(), geometry_, chunk, y.data(), y.outerStride(), bias_.data());
     if (relu && chunk.row_end == geometry_.out_height)  // the chunk's images are complete
       relu_in_place(y.middleRows(chunk.image_begin, chunk.images));
@@ -116,19 +117,20 @@ void ConvTranspose2d<S>::backward(ConstMatRef<S> x, ConstMatRef<S> dy, MatRef<S>
     im2col_chunk(dy.data(), dy.outerStride(), geometry_, chunk, cols.data());
     const ConstStridedMap<S> x_chunk =
         channel_major_chunk(geometry_, chunk, cin, x.data(), x.outerStride(), channel_major_);
-    weight_grad_.noalias() += x_chunk * cols.transpose();
+    gemm<S>(x_chunk, Op::kPlain, cols, Op::kTransposed, weight_grad_, /*accumulate=*/true,
+            transposed_);
     S* dx_first = dx.row(chunk.image_begin).data();
     if (chunk.images == 1) {  // a block of one image's rows, written in place
       StridedMap<S> dx_block(dx_first + chunk.row_begin * geometry_.out_width, cin, columns,
                              Eigen::OuterStride<>(in_pixels));
-      dx_block.noalias() = weight_ * cols;
+      gemm<S>(weight_, Op::kPlain, cols, Op::kPlain, dx_block, /*accumulate=*/false, transposed_);
       if (relu_input)  // x_chunk is the same block of x
         dx_block = (x_chunk.array() > S(0)).select(dx_block.array(), S(0)).matrix();
       return;
     }
     // The gathered inputs are no longer needed: their buffer takes the input gradients.
     MatMap<S> dx_chunk = channel_major_.resize(cin, columns);
-    dx_chunk.noalias() = weight_ * cols;
+    gemm<S>(weight_, Op::kPlain, cols, Op::kPlain, dx_chunk, /*accumulate=*/false, transposed_);
     scatter_channel_major(dx_chunk.data(), chunk.images, cin, in_pixels, dx_first,
                           dx.outerStride());
     if (relu_input)

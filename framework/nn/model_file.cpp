@@ -4,16 +4,15 @@
 #include <fmt/format.h>
 #include <fmt/ranges.h>
 
-#include <cerrno>
 #include <charconv>
-#include <cstdio>
 #include <cstring>
-#include <fstream>
-#include <iterator>
 #include <limits>
 #include <set>
 #include <stdexcept>
 #include <system_error>
+
+#include "core/atomic_file.hpp"
+#include "core/file_read.hpp"
 
 namespace corrmp::nn {
 namespace {
@@ -106,11 +105,11 @@ class ByteReader {
 };
 
 Bytes read_all(const std::string& path) {
-  std::ifstream in(path, std::ios::binary);
-  if (!in) fail(path, fmt::format("cannot open for reading: {}", std::strerror(errno)));
-  Bytes bytes((std::istreambuf_iterator<char>(in)), std::istreambuf_iterator<char>());
-  if (in.bad()) fail(path, "read error");
-  return bytes;
+  try {
+    return read_whole_file(path);
+  } catch (const FileError& e) {
+    fail(path, e.problem());  // "is a directory", "cannot open for reading: ...", ...
+  }
 }
 
 void check_tensor(const NamedTensor& t, const std::string& path) {
@@ -178,19 +177,10 @@ void ModelFile::write(const std::string& path) const {
   file += body;
   put_uint(file, fnv1a64(file.data(), file.size()), 8);
 
-  const std::string tmp = path + ".tmp";
-  {
-    std::ofstream out(tmp, std::ios::binary | std::ios::trunc);
-    if (!out)
-      fail(path, fmt::format("cannot open '{}' for writing: {}", tmp, std::strerror(errno)));
-    out.write(file.data(), static_cast<std::streamsize>(file.size()));
-    out.flush();
-    if (!out) fail(path, fmt::format("cannot write '{}': {}", tmp, std::strerror(errno)));
-  }
-  if (std::rename(tmp.c_str(), path.c_str()) != 0) {
-    const std::string reason = std::strerror(errno);
-    std::remove(tmp.c_str());
-    fail(path, fmt::format("cannot rename '{}' into place: {}", tmp, reason));
+  try {
+    write_file_atomically(path, file);
+  } catch (const FileError& e) {
+    fail(path, e.problem());  // the temporary file is gone and `path` is as it was
   }
 }
 

@@ -14,10 +14,11 @@
 //   offset 16 + B  uint64    FNV-1a 64 hash (offset basis 0xcbf29ce484222325, prime
 //                            0x100000001b3) of bytes [0, 16 + B)
 // Readers reject, with a one-line std::runtime_error "model file '<path>': <problem>": a
-// missing or unreadable file, wrong magic, a version of 0 or newer than kFormatVersion, a file
-// shorter than its header says (truncated), trailing bytes, a checksum mismatch, and a body
-// whose structure does not add up. write() goes through "<path>.tmp" and a rename, so a crash
-// never leaves a half-written model under the final name.
+// missing or unreadable file, a directory or other non-regular file, wrong magic, a version of
+// 0 or newer than kFormatVersion, a file shorter than its header says (truncated), trailing
+// bytes, a checksum mismatch, and a body whose structure does not add up. write() goes through
+// core/atomic_file (a temporary name of the writer's own, checked writes, fsync, rename), so a
+// crash or a full disk never leaves a half-written model under the final name.
 #pragma once
 
 #include <cstdint>
@@ -44,8 +45,9 @@ struct ModelFile {
   std::vector<NamedTensor> tensors;          ///< in file order, names unique
   std::string source = "<memory>";           ///< the path read from, used in error messages
 
-  /// Writes the file (atomically, via "<path>.tmp"); throws std::runtime_error on failure or
-  /// on an invalid tensor (duplicate name, data size not matching its shape).
+  /// Writes the file atomically (core/atomic_file.hpp); throws std::runtime_error naming the
+  /// path on failure, leaving a previous file there untouched, or on an invalid tensor
+  /// (duplicate name, data size not matching its shape).
   void write(const std::string& path) const;
   /// Reads and validates a file; throws std::runtime_error naming the path and the problem.
   static ModelFile read(const std::string& path);

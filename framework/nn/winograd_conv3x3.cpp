@@ -10,6 +10,9 @@
 #include <algorithm>
 #include <limits>
 #include <stdexcept>
+#include <type_traits>
+
+#include "nn/gemm.hpp"
 
 namespace corrmp::nn {
 namespace {
@@ -182,11 +185,16 @@ void split_padded(const S* row, Index width, Index tiles, S* __restrict before, 
   if (row == nullptr) {
     std::fill(before, before + tiles + 1, S(0));
     std::fill(at, at + tiles + 1, S(0));
-  } else if (width % 2 == 0) {  // tiles = width / 2: no bounds inside the loops
+  } else if (width % 2 == 0) {  // tiles = width / 2: no bounds inside the loop
+    // One pass over the row's pairs: the row often comes from memory, not cache, and two
+    // passes measured slower.
     before[0] = S(0);
-    for (Index m = 1; m <= tiles; ++m) before[m] = row[2 * m - 1];
-    for (Index m = 0; m < tiles; ++m) at[m] = row[2 * m];
     at[tiles] = S(0);
+    S* __restrict odd = before + 1;
+    for (Index m = 0; m < tiles; ++m) {
+      at[m] = row[2 * m];
+      odd[m] = row[2 * m + 1];
+    }
   } else {
     for (Index m = 0; m <= tiles; ++m) {
       before[m] = m > 0 && 2 * m - 1 < width ? row[2 * m - 1] : S(0);
@@ -203,8 +211,10 @@ void split(const S* row, Index width, Index tiles, S* __restrict even, S* __rest
     std::fill(even, even + tiles, S(0));
     std::fill(odd, odd + tiles, S(0));
   } else if (width % 2 == 0) {
-    for (Index m = 0; m < tiles; ++m) even[m] = row[2 * m];
-    for (Index m = 0; m < tiles; ++m) odd[m] = row[2 * m + 1];
+    for (Index m = 0; m < tiles; ++m) {
+      even[m] = row[2 * m];
+      odd[m] = row[2 * m + 1];
+    }
   } else {
     for (Index m = 0; m < tiles; ++m) {
       even[m] = row[2 * m];
@@ -228,10 +238,23 @@ void overlap_row(Index width, Index tiles, const S* const* a, const S* const* b,
   const S *b0 = b[0], *b1 = b[1], *b2 = b[2], *b3 = b[3];
   out(0, a1[0] + b1[0]);
   if (width > 1) out(1, a2[0] + b2[0] + (tiles > 1 ? a0[1] + b0[1] : S(0)));
-  for (Index m = 1; m + 1 < tiles; ++m) {
-    out(2 * m, a1[m] + b1[m] + a3[m - 1] + b3[m - 1]);
-    out(2 * m + 1, a2[m] + b2[m] + a0[m + 1] + b0[m + 1]);
-  }
+  // The inner columns, in a loop without the test for keep so that it vectorises.
+  const auto inner = [&](auto masked) {
+    for (Index m = 1; m + 1 < tiles; ++m) {
+      S even = a1[m] + b1[m] + a3[m - 1] + b3[m - 1];
+      S odd = a2[m] + b2[m] + a0[m + 1] + b0[m + 1];
+      if constexpr (decltype(masked)::value) {
+        even = keep[2 * m] > S(0) ? even : S(0);
+        odd = keep[2 * m + 1] > S(0) ? odd : S(0);
+      }
+      row[2 * m] = even;
+      row[2 * m + 1] = odd;
+    }
+  };
+  if (keep == nullptr)
+    inner(std::false_type{});
+  else
+    inner(std::true_type{});
   if (tiles > 1) {
     const Index m = tiles - 1;
     out(2 * m, a1[m] + b1[m] + a3[m - 1] + b3[m - 1]);
@@ -425,7 +448,9 @@ void WinogradConv3x3<S>::forward(const S* weight, const S* bias, ConstMatRef<S> 
     for (int xi = 0; xi < kTerms; ++xi) {
       const ConstMatMap<S> u(u_.view().data() + xi * u_.cols(), cout, cin);
       const ConstMatMap<S> v(v_.view().data() + xi * v_terms, cin, columns);
-      MatMap<S>(m_.view().data() + xi * m_terms, cout, columns).noalias() = u * v;
+      gemm<S>(u, Op::kPlain, v, Op::kPlain,
+              MatMap<S>(m_.view().data() + xi * m_terms, cout, columns),
+              /*accumulate=*/false, transposed_);
     }
     write_outputs(bias, count, y.row(first).data(), y.outerStride(), relu);
   }
@@ -453,8 +478,11 @@ void WinogradConv3x3<S>::backward(const S* weight, ConstMatRef<S> x, ConstMatRef
       const ConstMatMap<S> u(u_.view().data() + xi * u_.cols(), cout, cin);
       MatMap<S> v(v_.view().data() + xi * v_terms, cin, columns);
       const ConstMatMap<S> dm(m_.view().data() + xi * m_terms, cout, columns);
-      MatMap<S>(du.data() + xi * du.cols(), cout, cin).noalias() += dm * v.transpose();
-      if (dx != nullptr) v.noalias() = u.transpose() * dm;  // V_xi is used up: it takes dV_xi
+      gemm<S>(dm, Op::kPlain, v, Op::kTransposed, MatMap<S>(du.data() + xi * du.cols(), cout, cin),
+              /*accumulate=*/true, transposed_);
+      // V_xi is used up: it takes dV_xi.
+      if (dx != nullptr)
+        gemm<S>(u, Op::kTransposed, dm, Op::kPlain, v, /*accumulate=*/false, transposed_);
     }
     if (dx != nullptr)
       write_input_grads(count, dx + first * dx_stride, dx_stride,

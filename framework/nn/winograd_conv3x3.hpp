@@ -83,6 +83,7 @@ class WinogradConv3x3 {
   Buffer<S> v_;                  // V, then dV, of one chunk (kTerms rows, term_stride apart)
   Buffer<S> m_;                  // M or dM of one chunk (likewise)
   Buffer<S> du_;                 // dU summed over the batch
+  Buffer<S> transposed_;         // V_xi^T of one chunk (nn/gemm.hpp's scratch)
   Vec<S> rows_;                  // per-row scratch of the transforms
 };
 

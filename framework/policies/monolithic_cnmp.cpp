@@ -7,12 +7,22 @@
 #include <algorithm>
 #include <filesystem>
 
+#include "core/parameter_error.hpp"
 #include "policies/segmented_cnmp.hpp"
 
 namespace corrmp {
 
 MonolithicCnmp::MonolithicCnmp(const MonolithicCnmpParams& params, uint64_t seed)
-    : params_(params), seed_(seed) {}
+    : params_(params), seed_(seed) {
+  check_file_name("segment", params_.segment);
+}
+
+std::vector<MemoryNeed> MonolithicCnmp::memory_needs(int64_t longest) const {
+  return {{cnmp_training_bytes(params_.network, params_.training, longest), "training.batch_size",
+           fmt::format("training the CNMP (batch_size {}, max_observations {}, max_targets {})",
+                       params_.training.batch_size, params_.training.max_observations,
+                       params_.training.max_targets)}};
+}
 
 std::vector<PolicyTrainingSummary> MonolithicCnmp::fit(const std::vector<Demonstration>& train,
                                                        const std::vector<Demonstration>& validation,

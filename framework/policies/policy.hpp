@@ -9,6 +9,7 @@
 
 #include "cnmp/cnmp_model.hpp"
 #include "cnmp/cnmp_trainer.hpp"
+#include "core/memory_need.hpp"
 #include "core/seeds.hpp"
 #include "data/demonstrations.hpp"
 
@@ -43,6 +44,13 @@ class Policy {
   virtual CnmpPrediction generate(const std::string& segment, const Eigen::MatrixXd& observations,
                                   const Eigen::VectorXd& context,
                                   const Eigen::MatrixXd& query_x) = 0;
+
+  // The memory training will take with the declared sizes (checked at load);
+  // `longest` is the demonstrations' longest trajectory when known, else 0.
+  virtual std::vector<MemoryNeed> memory_needs(int64_t longest) const {
+    (void)longest;
+    return {};
+  }
 
   // Writes the trained networks as model files into `directory`.
   virtual void save(const std::string& directory) = 0;

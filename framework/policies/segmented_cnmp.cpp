@@ -5,7 +5,9 @@
 #include <spdlog/spdlog.h>
 
 #include <filesystem>
+#include <set>
 
+#include "core/parameter_error.hpp"
 #include "core/thread_budget.hpp"
 
 namespace corrmp {
@@ -24,7 +26,21 @@ std::vector<CnmpTrajectory> segment_trajectories(const std::vector<Demonstration
 }
 
 SegmentedCnmp::SegmentedCnmp(const SegmentedCnmpParams& params, uint64_t seed)
-    : params_(params), seed_(seed) {}
+    : params_(params), seed_(seed) {
+  if (params_.segments.empty()) {
+    throw ParameterError("segments", "lists no segment: a segmented policy needs at least one");
+  }
+  std::set<std::string> seen;
+  for (size_t i = 0; i < params_.segments.size(); ++i) {
+    const std::string key = fmt::format("segments[{}].name", i);
+    check_file_name(key, params_.segments[i].name);
+    if (!seen.insert(params_.segments[i].name).second) {
+      throw ParameterError(key, fmt::format("segment '{}' is listed twice: each segment has one "
+                                            "CNMP",
+                                            params_.segments[i].name));
+    }
+  }
+}
 
 // The segment networks are independent, so they train concurrently (core/thread_budget.hpp).
 // Each trains on its own stream, derived from one draw of `rng` and the segment's name, so the
@@ -59,6 +75,17 @@ std::vector<PolicyTrainingSummary> SegmentedCnmp::fit(const std::vector<Demonstr
   });
   for (size_t i = 0; i < count; ++i) models_[params_.segments[i].name] = std::move(models[i]);
   return summaries;
+}
+
+std::vector<MemoryNeed> SegmentedCnmp::memory_needs(int64_t longest) const {
+  const double each = cnmp_training_bytes(params_.network, params_.training, longest);
+  const double segments = static_cast<double>(params_.segments.size());
+  return {{each * segments, "training.batch_size",
+           fmt::format("training {} CNMPs (batch_size {}, max_observations {}, max_targets {}, "
+                       "width {})",
+                       params_.segments.size(), params_.training.batch_size,
+                       params_.training.max_observations, params_.training.max_targets,
+                       params_.network.width)}};
 }
 
 std::vector<std::string> SegmentedCnmp::segments() const {

@@ -52,6 +52,7 @@ class SegmentedCnmp : public Policy {
   std::vector<std::string> context_segments() const override;
   CnmpPrediction generate(const std::string& segment, const Eigen::MatrixXd& observations,
                           const Eigen::VectorXd& context, const Eigen::MatrixXd& query_x) override;
+  std::vector<MemoryNeed> memory_needs(int64_t longest) const override;
   void save(const std::string& directory) override;
 
  private:

@@ -3,6 +3,7 @@
 
 #include <fmt/format.h>
 #include <signal.h>
+#include <spdlog/spdlog.h>
 #include <unistd.h>
 
 #include <cerrno>
@@ -96,8 +97,17 @@ std::string host_name() {
 }
 
 ResultStore::ResultStore(const std::string& path, int busy_timeout_ms) : path_(path) {
-  const auto parent = std::filesystem::path(path).parent_path();
-  if (!parent.empty()) std::filesystem::create_directories(parent);
+  namespace fs = std::filesystem;
+  std::error_code ec;
+  const fs::file_status status = fs::status(path, ec);
+  if (fs::is_directory(status))
+    throw StoreError(fmt::format("{}: is a directory, not a database", path));
+  if (fs::exists(status) && !fs::is_regular_file(status)) {
+    throw StoreError(fmt::format("{}: is not a regular file, not a database", path));
+  }
+  const bool existed_empty = fs::is_regular_file(status) && fs::file_size(path, ec) == 0 && !ec;
+  const auto parent = fs::path(path).parent_path();
+  if (!parent.empty()) fs::create_directories(parent);
   if (sqlite3_open_v2(path.c_str(), &db_, SQLITE_OPEN_READWRITE | SQLITE_OPEN_CREATE, nullptr) !=
       SQLITE_OK) {
     const std::string message = db_ ? sqlite3_errmsg(db_) : "out of memory";
@@ -109,7 +119,19 @@ ResultStore::ResultStore(const std::string& path, int busy_timeout_ms) : path_(p
   try {
     execute("PRAGMA journal_mode=WAL");
     execute("PRAGMA foreign_keys=ON");
-    migrate();
+    migrate(existed_empty);
+  } catch (const StoreError&) {
+    const int code = sqlite3_errcode(db_);
+    sqlite3_close(db_);
+    db_ = nullptr;
+    // Garbage bytes or a truncated database: say so, with what to do.
+    if (code == SQLITE_NOTADB || code == SQLITE_CORRUPT) {
+      throw StoreError(fmt::format(
+          "{}: not a usable result database ({}); move it aside or choose another database file",
+          path,
+          code == SQLITE_NOTADB ? "not an SQLite database" : "the file is damaged or truncated"));
+    }
+    throw;
   } catch (...) {
     sqlite3_close(db_);
     db_ = nullptr;
@@ -149,9 +171,16 @@ void ResultStore::transaction(const std::function<void()>& body) {
   }
 }
 
-void ResultStore::migrate() {
+void ResultStore::migrate(bool existed_empty) {
   transaction([&] {
     const int64_t version = query_int("PRAGMA user_version");
+    // A 0-byte file is what `touch` or a creator killed before its first
+    // commit leaves: SQLite takes it for a new database, and so do we, aloud.
+    // (A WAL database whose schema is not yet checkpointed also has a 0-byte
+    // main file; it has tables, and no notice.)
+    if (existed_empty && version == 0 && query_int("SELECT count(*) FROM sqlite_master") == 0) {
+      spdlog::warn("{}: empty file (0 bytes); using it as a new result database", path_);
+    }
     if (version > kSchemaVersion) {
       throw StoreError(fmt::format(
           "{}: database schema version {} is newer than this build's {}; use a newer build or "

@@ -14,6 +14,7 @@
 
 namespace corrmp {
 
+// Every StoreError's message starts with the database file's path.
 class StoreError : public std::runtime_error {
  public:
   using std::runtime_error::runtime_error;
@@ -54,6 +55,10 @@ class ResultStore {
   static constexpr int kSchemaVersion = 3;  // 2: trials.details; 3: runs' uid and sweep
 
   // Opens (creating the file and its folder if needed) and migrates the schema.
+  // An existing 0-byte file becomes a new database with a one-line warning.
+  // Throws StoreError naming the path for a directory, garbage bytes or a
+  // damaged or truncated database ("not a usable result database"), before
+  // anything is written to it.
   explicit ResultStore(const std::string& path, int busy_timeout_ms = 60000);
   ~ResultStore();
   ResultStore(const ResultStore&) = delete;
@@ -87,7 +92,7 @@ class ResultStore {
   sqlite3* handle() { return db_; }
 
  private:
-  void migrate();
+  void migrate(bool existed_empty);
   void insert_trials(int64_t run_id, const std::vector<TrialRecord>& trials);
   void insert_metrics(int64_t run_id, const std::vector<MetricRecord>& metrics);
 

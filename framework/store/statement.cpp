@@ -15,7 +15,10 @@ Statement::~Statement() { sqlite3_finalize(stmt_); }
 
 void Statement::check(int code, const char* what) const {
   if (code != SQLITE_OK && code != SQLITE_ROW && code != SQLITE_DONE) {
-    throw StoreError(fmt::format("sqlite {} failed: {}", what, sqlite3_errmsg(db_)));
+    // Every error names the database; "" for an in-memory one.
+    const char* file = sqlite3_db_filename(db_, "main");
+    const std::string where = file != nullptr && *file != '\0' ? std::string(file) + ": " : "";
+    throw StoreError(fmt::format("{}sqlite {} failed: {}", where, what, sqlite3_errmsg(db_)));
   }
 }
 

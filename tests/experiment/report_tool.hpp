@@ -1,5 +1,5 @@
-// Test helper: runs the report tool on a test's database (<dir>/r.sqlite) and
-// returns its exit code, stdout and stderr.
+// Test helpers: run the report tool or run_experiment on a test's database
+// (<dir>/r.sqlite, runs under <dir>/runs) and return the exit code, stdout and stderr.
 #pragma once
 
 #include <sys/wait.h>
@@ -24,12 +24,20 @@ inline std::string read(const std::string& path) {
   return text.str();
 }
 
-inline ToolOutcome report_tool(const TempDir& dir, const std::string& args) {
+inline ToolOutcome run_tool(const TempDir& dir, const std::string& command_line) {
   const std::string out = dir.file("out.txt"), err = dir.file("err.txt");
-  const std::string command = std::string(REPORT_BIN) + " --db " + dir.file("r.sqlite") + " " +
-                              args + " >" + out + " 2>" + err;
+  const std::string command = command_line + " >" + out + " 2>" + err;
   const int status = std::system(command.c_str());
   return {WIFEXITED(status) ? WEXITSTATUS(status) : -1, read(out), read(err)};
+}
+
+inline ToolOutcome report_tool(const TempDir& dir, const std::string& args) {
+  return run_tool(dir, std::string(REPORT_BIN) + " --db " + dir.file("r.sqlite") + " " + args);
+}
+
+inline ToolOutcome run_experiment_tool(const TempDir& dir, const std::string& args) {
+  return run_tool(dir, std::string(RUN_EXPERIMENT_BIN) + " " + args + " --db " +
+                           dir.file("r.sqlite") + " --out " + dir.file("runs"));
 }
 
 }  // namespace corrmp::testing

@@ -51,7 +51,7 @@ TEST(RunExperiment, MalformedConfigsGiveOneLineExitTwoAndNoDatabaseWrites) {
       {"experiment: {name: a}\nseed: -1\n",
        "bad.yaml:2:7: seed: expected a non-negative integer, got '-1'"},
       {"experiment: {name: a}\ndemonstrations: {type: curve_family, train: 0}\n",
-       "bad.yaml:2:45: demonstrations.train: value 0 is out of range: must be >= 1"},
+       "bad.yaml:2:45: demonstrations.train: value 0 is out of range: must be in [1, 1000000]"},
       {"experiment: {name: a}\ndemonstrations: {type: curve_famly}\n",
        "bad.yaml:2:24: demonstrations.type: unknown demonstration source 'curve_famly' (did you "
        "mean 'curve_family'?); valid: corridor_expert, rope_expert, curve_family, "

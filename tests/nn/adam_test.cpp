@@ -1,11 +1,14 @@
 // Tests of nn/adam.hpp: two hand-computed PyTorch-Adam steps (with and without L2 weight
-// decay), convergence on a quadratic, zero_grad, and option validation.
+// decay), convergence on a quadratic, zero_grad, option validation, and steps split into ranges
+// (as the data-parallel autoencoder trainer runs them on several threads).
 #include "nn/adam.hpp"
 
 #include <gtest/gtest.h>
 
 #include <cmath>
 #include <stdexcept>
+#include <string>
+#include <vector>
 
 #include "nn/parameter.hpp"
 
@@ -86,6 +89,43 @@ TEST(Adam, ZeroGradClearsAllGradients) {
   Adam<float> adam({{"v", {3}, value.data(), grad.data()}}, AdamOptions{});
   adam.zero_grad();
   EXPECT_EQ(grad, Eigen::Vector3f::Zero());
+}
+
+// Updating a step's entries in ranges on kRangeAlignment boundaries, in any order, gives exactly
+// step()'s result.
+TEST(Adam, AlignedRangesOfAStepGiveExactlyTheStep) {
+  constexpr Index kAlign = Adam<float>::kRangeAlignment;
+  const Index sizes[] = {2 * kAlign + 904, 37};
+  std::vector<Eigen::VectorXf> values, grads;
+  for (Index size : sizes) {
+    values.push_back(Eigen::VectorXf::Random(size));
+    grads.push_back(Eigen::VectorXf::Random(size));
+  }
+  std::vector<Eigen::VectorXf> split_values = values, split_grads = grads;
+  std::vector<Parameter<float>> whole, split;
+  for (size_t k = 0; k < values.size(); ++k) {
+    whole.push_back({"p" + std::to_string(k), {sizes[k]}, values[k].data(), grads[k].data()});
+    split.push_back(
+        {"p" + std::to_string(k), {sizes[k]}, split_values[k].data(), split_grads[k].data()});
+  }
+  AdamOptions options;
+  options.learning_rate = 0.01;
+  options.weight_decay = 0.1;
+  Adam<float> a(whole, options), b(split, options);
+  for (int step = 0; step < 3; ++step) {
+    a.step();
+    b.begin_step();
+    b.update_range(1, 0, 37);
+    b.update_range(0, 2 * kAlign, sizes[0]);  // the ranges out of order
+    b.update_range(0, 0, kAlign);
+    b.update_range(0, kAlign, 2 * kAlign);
+    for (size_t k = 0; k < values.size(); ++k) {
+      grads[k] *= -0.5f;
+      split_grads[k] *= -0.5f;
+    }
+  }
+  EXPECT_EQ(b.step_count(), 3);
+  for (size_t k = 0; k < values.size(); ++k) EXPECT_EQ(split_values[k], values[k]) << k;
 }
 
 TEST(Adam, RejectsInvalidOptions) {

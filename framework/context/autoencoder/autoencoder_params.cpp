@@ -51,6 +51,26 @@ std::string AutoencoderArchitecture::summary() const {
                      fmt::join(filters, ","), latent_size);
 }
 
+double AutoencoderParams::training_bytes() const {
+  const AutoencoderArchitecture a = architecture();
+  const double k2 = static_cast<double>(kernel_size) * kernel_size;
+  double activations = static_cast<double>(image_size) * image_size * channels;  // per image
+  double weights = 0.0;
+  int input_channels = channels;
+  const std::vector<int> sizes = a.encoder_sizes();
+  for (size_t i = 0; i < sizes.size(); ++i) {
+    const double pixels = static_cast<double>(sizes[i]) * sizes[i];
+    activations += pixels * (filters[i] + input_channels * k2);  // output and its im2col
+    weights += static_cast<double>(filters[i]) * input_channels * k2;
+    input_channels = filters[i];
+  }
+  const double flat = static_cast<double>(filters.back()) * sizes.back() * sizes.back();
+  weights += flat * latent_size;
+  // The decoder mirrors the encoder; values and gradients, all floats.
+  const double per_image = 2.0 * 2.0 * activations * sizeof(float);
+  return batch_size * per_image + 2.0 * 4.0 * weights * sizeof(float);
+}
+
 AutoencoderArchitecture AutoencoderParams::architecture() const {
   AutoencoderArchitecture a;
   a.image_size = image_size;

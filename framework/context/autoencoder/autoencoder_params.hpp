@@ -62,16 +62,18 @@ struct AutoencoderParams {
 
   template <class Fields>
   void describe(Fields& f) {
-    f("image_size", image_size, "images are resized to image_size x image_size", at_least(4));
+    f("image_size", image_size, "images are resized to image_size x image_size", in_range(4, 1024));
     f("channels", channels, "image channels: 3 (RGB) or 1 (grey)", in_range(1, 3));
-    f("strides", strides, "encoder convolution strides (the paper: [2, 1, 2, 1, 2])", at_least(1));
+    f("strides", strides, "encoder convolution strides (the paper: [2, 1, 2, 1, 2])",
+      in_range(1, 16));
     f("filters", filters, "encoder convolution filters (the paper: [32, 32, 64, 64, 64])",
-      at_least(1));
-    f("kernel_size", kernel_size, "convolution kernel size (the paper: 3)", at_least(1));
-    f("latent_size", latent_size, "latent (context) size (the paper: 8)", at_least(1));
+      in_range(1, 4096));
+    f("kernel_size", kernel_size, "convolution kernel size (the paper: 3)", in_range(1, 31));
+    f("latent_size", latent_size, "latent (context) size (the paper: 8)", in_range(1, 65536));
     f("learning_rate", learning_rate, "Adam learning rate (the paper: 3e-4)", positive());
-    f("epochs", epochs, "training epochs (the paper: 70)", at_least(1));
-    f("batch_size", batch_size, "images per Adam step (not given in the paper)", at_least(1));
+    f("epochs", epochs, "training epochs (the paper: 70)", in_range(1, 1000000));
+    f("batch_size", batch_size, "images per Adam step (not given in the paper)",
+      in_range(1, 65536));
     f("threads", threads,
       "data-parallel shards of each minibatch, run on as many threads as the run's --threads "
       "allow (the results depend on this value, not on the cores)",
@@ -82,6 +84,9 @@ struct AutoencoderParams {
 
   /// The architecture part, validated (throws std::invalid_argument).
   AutoencoderArchitecture architecture() const;
+  /// Peak memory of training, in bytes (a load-time estimate: one batch's activations, their
+  /// gradients and im2col buffers; weights with Adam's moments).
+  double training_bytes() const;
 };
 
 }  // namespace corrmp

@@ -24,11 +24,11 @@
 //
 // Batches follow nn/tensor.hpp: one image per row, flattened in C, H, W order. Activations live
 // in nn::Buffer members, so a training step allocates nothing after the first step with the
-// largest batch (apart from Eigen's GEMM workspace for the large 32x32 products, see
-// nn/conv2d.hpp). Inference (encode, decode, reconstruct, reconstruction_mse) runs in chunks of
-// kInferenceChunk images to bound memory. A ConvAutoencoder is copyable (the data-parallel
-// trainer copies it into its worker replicas); it is not safe to use one object from two
-// threads at once.
+// largest batch (apart from Eigen's GEMM workspace for the large 32x32 products where Eigen
+// computes them, see nn/conv2d.hpp). Inference (encode, decode, reconstruct, reconstruction_mse)
+// runs in chunks of kInferenceChunk images to bound memory. A ConvAutoencoder is copyable (the
+// data-parallel trainer copies it into its worker replicas); it is not safe to use one object from
+// two threads at once.
 #pragma once
 
 #include <cstdint>

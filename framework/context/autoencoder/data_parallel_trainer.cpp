@@ -20,6 +20,23 @@ DataParallelTrainer::DataParallelTrainer(ConvAutoencoder<float>& model, int shar
       adam_(model.parameters(), nn::AdamOptions{learning_rate}) {
   params_.push_back(model.parameters());
   for (auto& replica : replicas_) params_.push_back(replica.parameters());
+  for (size_t k = 0; k < params_[0].size(); ++k)
+    for (nn::Index begin = 0; begin < params_[0][k].size(); begin += kUpdateBlock)
+      blocks_.push_back({k, begin, std::min(begin + kUpdateBlock, params_[0][k].size())});
+}
+
+void DataParallelTrainer::reduce_and_update(size_t first, size_t last, nn::Index batch) {
+  for (size_t b = first; b < last; ++b) {
+    const UpdateBlock& block = blocks_[b];
+    const nn::Index size = block.end - block.begin;
+    float* sum = params_[0][block.parameter].grad + block.begin;
+    for (int r = 1; r < shards_; ++r) {
+      if ((r + 1) * batch / shards_ == r * batch / shards_) continue;  // empty shard
+      const float* g = params_[r][block.parameter].grad + block.begin;
+      for (nn::Index i = 0; i < size; ++i) sum[i] += g[i];
+    }
+    adam_.update_range(block.parameter, block.begin, block.end);
+  }
 }
 
 void DataParallelTrainer::sync_weights(int r) {
@@ -42,11 +59,12 @@ double DataParallelTrainer::step(nn::ConstMatRef<float> data, const int* order, 
     const float share = static_cast<float>(end - begin) / static_cast<float>(batch);
     partial_[r] = static_cast<double>(share) * worker(r).train_step(x, share);
   });
-  for (int r = 1; r < threads; ++r) {
-    if ((r + 1) * batch / threads == r * batch / threads) continue;  // empty shard
-    for (size_t k = 0; k < params_[0].size(); ++k) params_[0][k].grads() += params_[r][k].grads();
-  }
-  adam_.step();
+  adam_.begin_step();
+  const size_t blocks = blocks_.size(), workers = static_cast<size_t>(pool_.size());
+  pool_.run([&](int w) {
+    const size_t index = static_cast<size_t>(w);
+    reduce_and_update(index * blocks / workers, (index + 1) * blocks / workers, batch);
+  });
   return std::accumulate(partial_.begin(), partial_.end(), 0.0);
 }
 

@@ -8,13 +8,16 @@
 //   g_r = (B_r / B) grad L_r            (L_r: mean squared error of its B_r images)
 // Then the replica gradients are added to the model's in the fixed order r = 1, ..., T - 1, so
 // g = sum_r g_r is the gradient of the minibatch's mean loss, and one Adam step updates the
-// model. The shards run on W <= T workers (worker_pool.hpp; worker w takes shards w, w + W,
-// ...): results are deterministic for given inputs and T, whatever W, so a run keeps its
-// results when a sweep gives it fewer cores. Different T compute the same
-// mathematical step but sum per-image gradient contributions in another order (and run Eigen
-// products on other row counts), so they agree only up to float rounding, which training
-// slowly amplifies. Once every worker has seen its largest shard, a step allocates nothing
-// beyond Eigen's GEMM workspace (nn/conv2d.hpp).
+// model. This sum and the Adam step run on the workers too, each on its own range of parameter
+// entries (blocks of kUpdateBlock entries, on Adam's range boundaries): every entry is summed
+// and updated by the same operations whichever worker has it. The shards run on W <= T workers
+// (worker_pool.hpp; worker w takes shards w, w + W, ...): results are deterministic for given
+// inputs and T, whatever W, so a run keeps its results when a sweep gives it fewer cores.
+// Different T compute the same mathematical step but sum per-image gradient contributions in
+// another order (and run their matrix products on other sizes), so they agree only up to float
+// rounding, which training slowly amplifies. Once every worker has seen its largest shard, a
+// step allocates nothing beyond Eigen's GEMM workspace where Eigen computes the products
+// (nn/conv2d.hpp).
 #pragma once
 
 #include <cstdint>
@@ -49,6 +52,18 @@ class DataParallelTrainer {
   ConvAutoencoder<float>& worker(int r) { return r == 0 ? model_ : replicas_[r - 1]; }
   // Copies the model's weights into replica r (nothing for r = 0); reads the model only.
   void sync_weights(int r);
+  // Adds the non-empty shards' gradients to the model's and updates it by Adam (its step begun),
+  // on the entries of blocks [first, last).
+  void reduce_and_update(size_t first, size_t last, nn::Index batch);
+
+  // Entries [begin, end) of parameter k: a unit of the gradient sum and Adam update.
+  struct UpdateBlock {
+    size_t parameter;
+    nn::Index begin;
+    nn::Index end;
+  };
+  // On Adam's range boundaries, so that the update is exactly Adam::step's.
+  static constexpr nn::Index kUpdateBlock = 2 * nn::Adam<float>::kRangeAlignment;
 
   // Runs task(r) for every shard r on the pool's workers.
   template <class Task>
@@ -66,6 +81,7 @@ class DataParallelTrainer {
   std::vector<nn::Buffer<float>> inputs_;                  // each shard's images
   std::vector<double> partial_;                            // each shard's share of the loss
   nn::Adam<float> adam_;
+  std::vector<UpdateBlock> blocks_;  // every parameter entry, in parameter order
 };
 
 }  // namespace corrmp

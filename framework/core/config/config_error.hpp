@@ -17,12 +17,13 @@ struct SourceLocation {
   std::string str() const;
 };
 
-// Thrown for every malformed config; what() is the complete one-line message,
+// Thrown for every malformed config; what() is the complete one-line message
+// (control characters and invalid UTF-8 escaped, a very long one shortened),
 // e.g. "configs/x.yaml:12:5: policy.cnmp.widht: unknown key (did you mean 'width'?)".
 class ConfigError : public std::runtime_error {
  public:
   ConfigError(const SourceLocation& where, const std::string& key_path, const std::string& what);
-  explicit ConfigError(const std::string& message) : std::runtime_error(message) {}
+  explicit ConfigError(const std::string& message);
 };
 
 }  // namespace corrmp

@@ -12,6 +12,9 @@ namespace corrmp {
 // Loads `path` and the files its top-level `include:` list names (relative to
 // the including file, merged in order, the including file last: maps are
 // deep-merged, scalars and lists replaced). The `include` key is removed.
+// Every file must be a regular file holding one UTF-8 YAML document, within
+// the bounds of config_limits.hpp; an include cycle is an error naming the
+// chain of files.
 ConfigNode load_config_file(const std::string& path);
 
 // Applies one `key.path=value` override; the value is YAML (a scalar or a flow

@@ -3,50 +3,11 @@
 
 #include <yaml-cpp/yaml.h>
 
-#include <fstream>
-#include <sstream>
+#include "core/config/config_file.hpp"
+#include "core/config/config_text.hpp"
+#include "core/config/yaml_tree_builder.hpp"
 
 namespace corrmp {
-
-namespace {
-
-SourceLocation location_of(const YAML::Mark& mark, const std::string& file) {
-  return SourceLocation{file, mark.line + 1, mark.column + 1};
-}
-
-ConfigNode from_yaml(const YAML::Node& node, const std::string& file) {
-  const SourceLocation where = location_of(node.Mark(), file);
-  switch (node.Type()) {
-    case YAML::NodeType::Scalar:
-      return ConfigNode::scalar(node.Scalar(), where, node.Tag() == "!");
-    case YAML::NodeType::Sequence: {
-      ConfigNode out = ConfigNode::sequence(where);
-      for (const auto& item : node) out.items().push_back(from_yaml(item, file));
-      return out;
-    }
-    case YAML::NodeType::Map: {
-      ConfigNode out = ConfigNode::map(where);
-      for (const auto& kv : node) {
-        if (!kv.first.IsScalar()) {
-          throw ConfigError(location_of(kv.first.Mark(), file), "", "map keys must be scalars");
-        }
-        const std::string key = kv.first.Scalar();
-        if (out.find(key) != nullptr) {
-          throw ConfigError(location_of(kv.first.Mark(), file), key, "duplicate key");
-        }
-        out.set(key, from_yaml(kv.second, file), location_of(kv.first.Mark(), file));
-      }
-      return out;
-    }
-    default: {
-      ConfigNode out;
-      out.set_where(where);
-      return out;
-    }
-  }
-}
-
-}  // namespace
 
 ConfigNode ConfigNode::scalar(std::string text, SourceLocation where, bool quoted) {
   ConfigNode node;
@@ -72,21 +33,25 @@ ConfigNode ConfigNode::map(SourceLocation where) {
 }
 
 ConfigNode ConfigNode::parse(const std::string& text, const std::string& file) {
-  YAML::Node root;
-  try {
-    root = YAML::Load(text);
-  } catch (const YAML::Exception& e) {
-    throw ConfigError(location_of(e.mark, file), "", "YAML syntax error: " + e.msg);
+  ConfigBudget budget;
+  return parse(text, file, budget);
+}
+
+ConfigNode ConfigNode::parse(const std::string& text, const std::string& file, ConfigBudget& budget,
+                             int base_depth) {
+  if (text.size() > kMaxConfigFileBytes) {
+    throw ConfigError(
+        SourceLocation{file, 0, 0}, "",
+        "larger than " + describe_bytes(kMaxConfigFileBytes) + ", the limit for a config file");
   }
-  return from_yaml(root, file);
+  if (const auto problem = find_text_problem(text)) {
+    throw ConfigError(SourceLocation{file, problem->line, problem->column}, "", problem->message);
+  }
+  return build_yaml_tree(text, file, budget, base_depth);
 }
 
 ConfigNode ConfigNode::load_file(const std::string& path) {
-  std::ifstream in(path);
-  if (!in) throw ConfigError(SourceLocation{path, 0, 0}, "", "cannot open config file");
-  std::stringstream buffer;
-  buffer << in.rdbuf();
-  return parse(buffer.str(), path);
+  return parse(read_config_file(path), path);
 }
 
 const ConfigNode* ConfigNode::find(const std::string& key) const {

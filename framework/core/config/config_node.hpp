@@ -7,6 +7,7 @@
 #include <string>
 
 #include "core/config/config_error.hpp"
+#include "core/config/config_limits.hpp"
 
 namespace corrmp {
 
@@ -21,8 +22,14 @@ class ConfigNode {
   static ConfigNode sequence(SourceLocation where);
   static ConfigNode map(SourceLocation where);
 
-  // Parses YAML text; `file` names it in locations and errors.
+  // Parses YAML text (one document, UTF-8, within config_limits.hpp); `file`
+  // names it in locations and errors. A null node for an empty text.
   static ConfigNode parse(const std::string& text, const std::string& file);
+  // The same, taking its values from `budget`, whose text is placed
+  // `base_depth` levels deep (an override's value, under its keys).
+  static ConfigNode parse(const std::string& text, const std::string& file, ConfigBudget& budget,
+                          int base_depth = 0);
+  // Parses a regular file of at most kMaxConfigFileBytes.
   static ConfigNode load_file(const std::string& path);
 
   Kind kind() const { return kind_; }

@@ -33,12 +33,12 @@ struct CorridorExpertParams {
 
   template <class Fields>
   void describe(Fields& f) {
-    f("train", train, "training demonstrations (the paper: 100)", at_least(1));
-    f("validation", validation, "validation demonstrations (the paper: 100)", at_least(0));
+    f("train", train, "training demonstrations (the paper: 100)", in_range(1, 100000));
+    f("validation", validation, "validation demonstrations (the paper: 100)", in_range(0, 100000));
     f("images", images, "capture head-camera images after pre-MP and after cor-MP");
     f("max_attempts_factor", max_attempts_factor,
       "scenarios tried per wanted demonstration before giving up (failed ones are dropped)",
-      at_least(1));
+      in_range(1, 1000));
     f("tempo_variation", tempo_variation,
       "a human's tempo varies: each stroke takes up to this fraction more or less time "
       "(uniform); 0 makes every demonstration of a scenario identical",

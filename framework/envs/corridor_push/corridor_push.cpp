@@ -3,7 +3,10 @@
 
 #include <fmt/format.h>
 
+#include <algorithm>
 #include <filesystem>
+
+#include "core/parameter_error.hpp"
 
 namespace corrmp {
 
@@ -17,15 +20,35 @@ std::string resolve_asset(const std::string& path) {
   return std::filesystem::exists(in_tree) ? in_tree.string() : path;
 }
 
+// The scene file with the bodies the task needs; a missing or incomplete one is refused at
+// load, naming the config key.
+SceneDescription load_task_scene(const std::string& configured) {
+  const std::string path = resolve_asset(configured);
+  if (!std::filesystem::is_regular_file(path)) {
+    throw ParameterError(
+        "scene",
+        fmt::format("scene file '{}' {}", configured,
+                    std::filesystem::exists(path) ? "is not a regular file" : "does not exist"));
+  }
+  SceneDescription scene = load_scene(path);
+  for (const char* body : {"corridor_left", "corridor_right", "object", "table"}) {
+    const bool present = std::any_of(scene.bodies.begin(), scene.bodies.end(),
+                                     [&](const SceneBodySpec& b) { return b.name == body; });
+    if (!present) {
+      throw ParameterError(
+          "scene", fmt::format("scene file '{}' has no body called '{}'", configured, body));
+    }
+  }
+  return scene;
+}
+
 }  // namespace
 
 CorridorPush::CorridorPush(const CorridorPushParams& params)
-    : params_(params), scene_(load_scene(resolve_asset(params.scene))) {
+    : params_(params), scene_(load_task_scene(params.scene)) {
   const double left = scene_.body("corridor_left").position[0];
   const double right = scene_.body("corridor_right").position[0];
   nominal_corridor_x_ = (left + right) / 2;
-  scene_.body("object");
-  scene_.body("table");
   reset(Scenario{{"corridor_offset", 0.0}, {"object_dx", 0.0}, {"object_dy", 0.0}});
 }
 

@@ -51,9 +51,9 @@ struct CorridorPushParams {
       at_least(0.0));
     f("settle_ticks", settle_ticks, "physics ticks to let the object rest after a segment",
       at_least(0));
-    f("pre_points", pre_points, "pre-MP trajectory points", at_least(2));
-    f("cor_points", cor_points, "cor-MP trajectory points", at_least(2));
-    f("post_points", post_points, "post-MP trajectory points", at_least(2));
+    f("pre_points", pre_points, "pre-MP trajectory points", in_range(2, 10000));
+    f("cor_points", cor_points, "cor-MP trajectory points", in_range(2, 10000));
+    f("post_points", post_points, "post-MP trajectory points", in_range(2, 10000));
     f("camera", camera, "head camera");
   }
 };

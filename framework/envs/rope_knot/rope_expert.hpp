@@ -29,15 +29,15 @@ struct RopeExpertParams {
 
   template <class Fields>
   void describe(Fields& f) {
-    f("train", train, "training demonstrations (the paper: 28 corrections)", at_least(1));
-    f("validation", validation, "validation demonstrations", at_least(0));
+    f("train", train, "training demonstrations (the paper: 28 corrections)", in_range(1, 100000));
+    f("validation", validation, "validation demonstrations", in_range(0, 100000));
     f("images", images, "capture head-camera RGB-D images at the segment starts");
     f("no_correction_share", no_correction_share,
       "share of demonstrations of the unperturbed scenario (no correction needed)",
       in_range(0.0, 1.0));
     f("max_attempts_factor", max_attempts_factor,
       "scenarios tried per wanted demonstration before giving up (failed ones are dropped)",
-      at_least(1));
+      in_range(1, 1000));
   }
 };
 

@@ -124,9 +124,9 @@ struct RopeKnotParams {
       positive());
     f("settle_time", settle_time, "time the rope settles after a reset (s)", at_least(0.0));
     f("min_winding", min_winding, "turns about the bar a knot must make", at_least(0.0));
-    f("pre_points", pre_points, "rows of the pre-MP segment", at_least(2));
-    f("cor_points", cor_points, "rows of the cor-MP segment", at_least(2));
-    f("post_points", post_points, "rows of the post-MP segment", at_least(2));
+    f("pre_points", pre_points, "rows of the pre-MP segment", in_range(2, 10000));
+    f("cor_points", cor_points, "rows of the cor-MP segment", in_range(2, 10000));
+    f("post_points", post_points, "rows of the post-MP segment", in_range(2, 10000));
     f("motion", motion, "the scripted teacher's choreography");
   }
 };

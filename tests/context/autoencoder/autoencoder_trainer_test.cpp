@@ -146,6 +146,28 @@ TEST(AutoencoderTrainer, TheThreadBudgetDoesNotChangeTheResult) {
   EXPECT_EQ(weights[0], weights[2]);
 }
 
+// The same with stride-1 layers (Winograd convolutions, nn/winograd_conv3x3.hpp) and more
+// parameter entries than one block of the trainer's parallel gradient sum and Adam update.
+TEST(AutoencoderTrainer, TheThreadBudgetDoesNotChangeTheResultWithWinogradLayers) {
+  AutoencoderParams p = small_params();
+  p.strides = {2, 1};
+  p.filters = {8, 12};
+  p.epochs = 2;
+  p.batch_size = 8;
+  p.threads = 3;
+  std::vector<std::vector<Eigen::VectorXf>> weights;
+  for (int budget : {1, 2, 3}) {
+    set_thread_budget(budget);
+    nn::Rng init(5);
+    ConvAutoencoder<float> model(p.architecture(), init);
+    train_squares(model, p, 29, 13);
+    weights.push_back(weights_of(model));
+  }
+  set_thread_budget(static_cast<int>(std::max(1u, std::thread::hardware_concurrency())));
+  EXPECT_EQ(weights[0], weights[1]);
+  EXPECT_EQ(weights[0], weights[2]);
+}
+
 TEST(AutoencoderTrainer, ThreadCountsGiveTheSameLossCurve) {
   AutoencoderParams p = small_params();
   p.epochs = 5;

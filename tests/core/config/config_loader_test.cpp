@@ -52,7 +52,7 @@ TEST(ConfigInclude, MissingFileAndCyclesAreErrors) {
   const auto missing = dir.write("m.yaml", "include: [nope.yaml]\n");
   EXPECT_NE(config_error_of([&] {
               load_config_file(missing);
-            }).find("m.yaml:1:10: include: included file"),
+            }).find("m.yaml:1:11: include: included file"),
             std::string::npos);
   dir.write("a.yaml", "include: b.yaml\n");
   const auto b = dir.write("b.yaml", "include: a.yaml\n");
@@ -86,7 +86,8 @@ TEST(ConfigOverride, MalformedOverridesAreErrors) {
             "command-line override 'policy.width.x=1': policy.width.x: cannot override inside a "
             "scalar");
   EXPECT_EQ(config_error_of([&] { load_config(path, {"segments.4=b"}); }),
-            "command-line override 'segments.4=b': segments.4: no such list element to override");
+            "command-line override 'segments.4=b': segments.4: list index 4 is out of range: the "
+            "list has 1 element");
 }
 
 struct Small {

@@ -1,0 +1,140 @@
+// End-to-end tests of run_experiment and report on damaged files: a result
+// database of garbage bytes or truncated gives one line naming it and a
+// non-zero exit with nothing written; a 0-byte one is used as new with a
+// notice; a demonstration cache replaced by a directory is reported and the
+// run goes through, every time.
+#include <gtest/gtest.h>
+#include <sys/wait.h>
+
+#include <filesystem>
+#include <fstream>
+#include <sstream>
+
+#include "config/test_files.hpp"
+#include "store/result_store.hpp"
+
+namespace corrmp {
+namespace {
+
+namespace fs = std::filesystem;
+using testing::TempDir;
+
+struct Outcome {
+  int exit_code = -1;
+  std::string err;
+};
+
+std::string bytes_of(const std::string& path) {
+  std::ifstream in(path, std::ios::binary);
+  std::stringstream buffer;
+  buffer << in.rdbuf();
+  return buffer.str();
+}
+
+Outcome run_tool(const TempDir& dir, const std::string& command_line) {
+  const std::string out = dir.file("stdout.txt"), err = dir.file("stderr.txt");
+  const int status = std::system((command_line + " >" + out + " 2>" + err).c_str());
+  return {WIFEXITED(status) ? WEXITSTATUS(status) : -1, bytes_of(err)};
+}
+
+Outcome run_experiment(const TempDir& dir, const std::string& args) {
+  return run_tool(dir, std::string(RUN_EXPERIMENT_BIN) + " " + args + " --db " +
+                           dir.file("r.sqlite") + " --out " + dir.file("runs"));
+}
+
+Outcome report(const TempDir& dir) {
+  return run_tool(dir, std::string(REPORT_BIN) + " --db " + dir.file("r.sqlite"));
+}
+
+int lines(const std::string& text) {
+  return static_cast<int>(std::count(text.begin(), text.end(), '\n'));
+}
+
+const std::string kTiny =
+    "experiment: {name: tiny}\nseed: 3\ndemonstrations: {type: curve_family, train: 4, "
+    "validation: 2, time_steps: 10}\npolicy:\n  type: segmented_cnmp\n  network: {width: 8}\n"
+    "  training: {updates: 50, validate_every: 50}\n";
+
+// Runs the tiny experiment and the report tool on the test's r.sqlite (left
+// damaged in `dir`), expecting one refusing line from each and no writes.
+void expect_refused(const TempDir& dir, const std::string& problem) {
+  const std::string db = dir.file("r.sqlite");
+  const std::string before = bytes_of(db);
+  const Outcome run = run_experiment(dir, dir.write("tiny.yaml", kTiny));
+  EXPECT_EQ(run.exit_code, 2);
+  EXPECT_EQ(run.err, "run_experiment: " + db + ": not a usable result database (" + problem +
+                         "); move it aside or choose another database file\n");
+  EXPECT_FALSE(fs::exists(dir.file("runs"))) << "no run directory for a run never recorded";
+  const Outcome tool = report(dir);
+  EXPECT_NE(tool.exit_code, 0);
+  EXPECT_EQ(lines(tool.err), 1) << tool.err;
+  EXPECT_NE(tool.err.find(db + ": not a usable result database"), std::string::npos) << tool.err;
+  EXPECT_EQ(bytes_of(db), before) << "the damaged database is left as it was";
+  EXPECT_FALSE(fs::exists(db + "-journal"));
+}
+
+TEST(DamagedFilesTools, AGarbageDatabaseIsRefusedInOneLine) {
+  TempDir dir;
+  std::string garbage;
+  for (int i = 0; i < 1000; ++i) garbage += "these are not the bytes of a database\n";
+  dir.write("r.sqlite", garbage);
+  expect_refused(dir, "not an SQLite database");
+}
+
+TEST(DamagedFilesTools, ATruncatedDatabaseIsRefusedInOneLine) {
+  TempDir dir;
+  ASSERT_EQ(run_experiment(dir, dir.write("tiny.yaml", kTiny)).exit_code, 0);
+  ASSERT_GT(fs::file_size(dir.file("r.sqlite")), 3 * 4096u);
+  fs::resize_file(dir.file("r.sqlite"), 2 * 4096);
+  fs::remove_all(dir.file("runs"));
+  expect_refused(dir, "the file is damaged or truncated");
+}
+
+TEST(DamagedFilesTools, AZeroByteDatabaseIsUsedAsNewWithANotice) {
+  TempDir dir;
+  const std::string db = dir.write("r.sqlite", "");
+  const Outcome run = run_experiment(dir, dir.write("tiny.yaml", kTiny) + " --quiet");
+  ASSERT_EQ(run.exit_code, 0) << run.err;
+  EXPECT_NE(run.err.find(db + ": empty file (0 bytes); using it as a new result database"),
+            std::string::npos)
+      << run.err;
+  ResultStore store(db);
+  EXPECT_EQ(store.query_int("SELECT COUNT(*) FROM runs WHERE status = 'completed'"), 1);
+}
+
+// The cache path taken by a directory: each run reports it and collects the
+// demonstrations again, with the results of the first run.
+TEST(DamagedFilesTools, ADirectoryInPlaceOfTheDemonstrationCacheIsNeverFatal) {
+  TempDir dir;
+  const std::string args = std::string(PROJECT_DIR) +
+                           "/configs/corridor_pc.yaml demonstrations.train=4 "
+                           "demonstrations.validation=2 policy.training.updates=100 "
+                           "policy.training.validate_every=50 policy.network.width=8 "
+                           "evaluation.trials=1";
+  ASSERT_EQ(run_experiment(dir, args).exit_code, 0);
+  std::string cache;
+  for (const auto& entry : fs::directory_iterator(dir.file("runs/cache"))) {
+    if (entry.path().extension() == ".bin") cache = entry.path().string();
+  }
+  ASSERT_FALSE(cache.empty());
+  fs::remove(cache);
+  fs::create_directories(cache);
+  for (int run = 2; run <= 3; ++run) {
+    const Outcome outcome = run_experiment(dir, args);
+    ASSERT_EQ(outcome.exit_code, 0) << outcome.err;
+    EXPECT_NE(outcome.err.find("demonstration cache '" + cache +
+                               "': is a directory; collecting the demonstrations again"),
+              std::string::npos)
+        << outcome.err;
+  }
+  ResultStore store(dir.file("r.sqlite"));
+  for (int run_id : {2, 3}) {
+    EXPECT_EQ(store.query_int("SELECT COUNT(*) FROM (SELECT name, value FROM metrics WHERE "
+                              "run_id = 1 EXCEPT SELECT name, value FROM metrics WHERE run_id = " +
+                              std::to_string(run_id) + ")"),
+              0);
+  }
+}
+
+}  // namespace
+}  // namespace corrmp
