@@ -82,7 +82,7 @@ int main(int argc, char** argv) {
   app.add_option("--run", query.runs, "only these run ids");
   app.add_option("--sweep", query.sweeps, "only the runs of these sweeps");
   app.add_option("--last", query.last, "only the newest N selected runs")
-      ->check(CLI::PositiveNumber);
+      ->check(corrmp::positive_number());
   app.add_option("--metric", format.extra_metrics, "more metric columns, by name");
   app.add_flag("--csv", csv, "CSV instead of Markdown");
   app.add_flag("--paper", paper, "append the paper's rows (Markdown)");

@@ -43,22 +43,22 @@ int main(int argc, char** argv) {
   app.add_option("--context", columns.context, "context columns")->delimiter(',');
   app.add_option("--updates", training.updates, "Adam updates")
       ->capture_default_str()
-      ->check(CLI::PositiveNumber);
+      ->check(corrmp::positive_number());
   app.add_option("--batch", training.batch_size, "demonstrations per update")
       ->capture_default_str()
-      ->check(CLI::PositiveNumber);
+      ->check(corrmp::positive_number());
   app.add_option("--max-observations", training.max_observations, "observations per update")
       ->capture_default_str()
-      ->check(CLI::PositiveNumber);
+      ->check(corrmp::positive_number());
   app.add_option("--max-targets", training.max_targets, "targets per update")
       ->capture_default_str()
-      ->check(CLI::PositiveNumber);
+      ->check(corrmp::positive_number());
   app.add_option("--lr", training.learning_rate, "Adam learning rate")
       ->capture_default_str()
-      ->check(CLI::PositiveNumber);
+      ->check(corrmp::positive_number());
   app.add_option("--validate-every", training.validate_every, "updates between validations")
       ->capture_default_str()
-      ->check(CLI::PositiveNumber);
+      ->check(corrmp::positive_number());
   app.add_option("--width", architecture.width, "hidden width")
       ->capture_default_str()
       ->check(CLI::Range(1, 4096));
@@ -70,7 +70,7 @@ int main(int argc, char** argv) {
       ->check(CLI::Range(1, 16));
   app.add_option("--min-std", architecture.min_std, "std floor (normalised units)")
       ->capture_default_str()
-      ->check(CLI::PositiveNumber);
+      ->check(corrmp::positive_number());
   app.add_option("--validation-fraction", validation_fraction, "share held out")
       ->capture_default_str()
       ->check(CLI::Range(0.0, 0.9));
