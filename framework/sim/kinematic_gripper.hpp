@@ -25,7 +25,7 @@ struct GripperParams {
       size_is(3).above(0.0));
     f("palm_size", palm_size, "palm box [x, y, z] (m)", size_is(3).above(0.0));
     f("opening", opening, "gap between open fingers (m)", at_least(0.0));
-    f("max_speed", max_speed, "largest tool speed (m/s)", positive());
+    f("max_speed", max_speed, "largest tool speed (m/s)", in_range(0.005, 10.0));
     f("colour", colour, "RGB in [0, 1]", size_is(3).at_least(0.0).at_most(1.0));
   }
 };

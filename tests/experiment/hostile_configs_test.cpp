@@ -52,6 +52,13 @@ TEST(HostileConfigs, AbsurdSizesNamesAndListsAreConfigErrorsBeforeAnythingIsWrit
        "environment.pre_points: value 2000000000 is out of range"},
       {config("corridor_pc.yaml") + " policy.training.batch_size=2000000000",
        "policy.training.batch_size: value 2000000000 is out of range"},
+      // Values that would make a simulation run for ever.
+      {config("rope_color.yaml") + " environment.settle_time=1e9",
+       "environment.settle_time: value 1e9 is out of range: must be in [0, 10]"},
+      {config("rope_color.yaml") + " environment.gripper.max_speed=1e-9",
+       "environment.gripper.max_speed: value 1e-9 is out of range"},
+      {config("corridor_pc.yaml") + " environment.gripper.max_speed=1e-9",
+       "environment.gripper.max_speed: value 1e-9 is out of range"},
       // Each value in range, their product not: the memory estimate refuses it.
       {config("corridor_ae.yaml") +
            " context.network.image_size=1024 'context.network.filters=[4096,4096,4096,4096,4096]'",

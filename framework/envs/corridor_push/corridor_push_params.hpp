@@ -50,7 +50,7 @@ struct CorridorPushParams {
     f("pass_margin", pass_margin, "how far past the corridor midpoint post-MP pushes (m)",
       at_least(0.0));
     f("settle_ticks", settle_ticks, "physics ticks to let the object rest after a segment",
-      at_least(0));
+      in_range(0, 100000));
     f("pre_points", pre_points, "pre-MP trajectory points", in_range(2, 10000));
     f("cor_points", cor_points, "cor-MP trajectory points", in_range(2, 10000));
     f("post_points", post_points, "post-MP trajectory points", in_range(2, 10000));

@@ -122,7 +122,7 @@ struct RopeKnotParams {
     f("waypoint_noise_period", waypoint_noise_period,
       "time between the knots the right hand's tracking error is interpolated between (s)",
       positive());
-    f("settle_time", settle_time, "time the rope settles after a reset (s)", at_least(0.0));
+    f("settle_time", settle_time, "time the rope settles after a reset (s)", in_range(0.0, 10.0));
     f("min_winding", min_winding, "turns about the bar a knot must make", at_least(0.0));
     f("pre_points", pre_points, "rows of the pre-MP segment", in_range(2, 10000));
     f("cor_points", cor_points, "rows of the cor-MP segment", in_range(2, 10000));

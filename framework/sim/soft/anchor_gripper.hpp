@@ -41,9 +41,9 @@ struct AnchorGripperParams {
     f("finger_thickness", finger_thickness, "finger thickness along the closing axis (m)",
       positive());
     f("palm_thickness", palm_thickness, "palm thickness along the approach axis (m)", positive());
-    f("max_speed", max_speed, "largest speed when tracking waypoints (m/s)", positive());
+    f("max_speed", max_speed, "largest speed when tracking waypoints (m/s)", in_range(0.005, 10.0));
     f("release_time", release_time, "time over which opening ramps the anchors out (s)",
-      positive());
+      FieldRule{}.above(0.0).at_most(10.0));
     f("colour", colour, "RGB in [0, 1]", size_is(3).at_least(0.0).at_most(1.0));
   }
 };
