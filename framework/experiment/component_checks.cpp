@@ -143,6 +143,16 @@ void check_state_names(const Experiment& e) {
   }
 }
 
+void check_state_source(const Experiment& e) {
+  const std::vector<std::string> names = e.context_extractor->state_names();
+  if (names.empty()) return;
+  const ConfigNode* type = e.config.context->node->find("type");
+  throw ConfigError(type->where(), "context.type",
+                    fmt::format("'{}' reads state values ({}), but there is no environment "
+                                "section to observe them",
+                                e.config.context->type, listed(names)));
+}
+
 void check_expert(const Experiment& e) {
   if (e.demonstrations->can_demonstrate()) return;
   const ConfigNode* type = e.config.demonstrations->node->find("type");
@@ -199,6 +209,7 @@ void check_components(const Experiment& experiment) {
   if (experiment.context_extractor) check_extractor_segments(experiment);
   if (experiment.context_extractor && experiment.demonstrations) check_images(experiment);
   if (experiment.context_extractor && experiment.environment) check_state_names(experiment);
+  if (experiment.context_extractor && !experiment.environment) check_state_source(experiment);
   if (experiment.policy) check_policy_contexts(experiment);
   if (experiment.environment && experiment.demonstrations && experiment.policy) {
     check_expert(experiment);

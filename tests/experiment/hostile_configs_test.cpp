@@ -35,6 +35,8 @@ TEST(HostileConfigs, AbsurdSizesNamesAndListsAreConfigErrorsBeforeAnythingIsWrit
        "policy.segments[0].name: '../../../../x' is not a valid name (it names files)"},
       {config("corridor_mono.yaml") + " policy.segment=../x",
        "policy.segment: '../x' is not a valid name"},
+      {tiny + " context.type=perfect 'context.segments=[{segment: full, state: [x]}]'",
+       "context.type: 'perfect' reads state values (x), but there is no environment section"},
       {tiny + " demonstrations.context_min=2", "demonstrations.context_max: is below context_min"},
       {config("corridor_pc.yaml") + " environment.scene=assets/scenes/nope.yaml",
        "environment.scene: scene file 'assets/scenes/nope.yaml' does not exist"},
