@@ -3,7 +3,6 @@
 // killed with kill -9 resumed to exactly one completed run per job, and a
 // Slurm round trip through a real single-node Slurm (skipped where Slurm
 // cannot start).
-#include <fcntl.h>
 #include <gtest/gtest.h>
 #include <signal.h>
 #include <sys/wait.h>
@@ -17,6 +16,7 @@
 
 #include "config/test_files.hpp"
 #include "store/result_store.hpp"
+#include "support/child_process.hpp"
 #include "support/local_slurm.hpp"
 
 namespace corrmp {
@@ -112,28 +112,12 @@ TEST(SweepCommand, AKilledSweepResumesToExactlyOneCompletedRunPerJob) {
   std::string slow = kTiny;
   slow.replace(slow.find("updates: 200"), 12, "updates: 4000");
   const std::string config = dir.write("tiny.yaml", slow);
-  const pid_t driver = fork();
-  if (driver == 0) {
-    const int null = ::open("/dev/null", O_WRONLY);
-    ::dup2(null, STDOUT_FILENO);
-    ::dup2(null, STDERR_FILENO);
-    execl(RUN_EXPERIMENT_BIN, RUN_EXPERIMENT_BIN, config.c_str(), "-m", "seed=range(0,6)", "-j",
-          "2", "--db", dir.file("r.sqlite").c_str(), "--out", dir.file("runs").c_str(),
-          static_cast<char*>(nullptr));
-    _exit(127);
-  }
+  const pid_t driver =
+      testing::spawn_quietly({RUN_EXPERIMENT_BIN, config, "-m", "seed=range(0,6)", "-j", "2",
+                              "--db", dir.file("r.sqlite"), "--out", dir.file("runs")});
   // Kill the driver once a job has completed and others are under way.
-  const auto deadline = std::chrono::steady_clock::now() + std::chrono::seconds(60);
-  int64_t completed = 0;
-  while (completed == 0 && std::chrono::steady_clock::now() < deadline) {
-    std::this_thread::sleep_for(std::chrono::milliseconds(100));
-    if (!std::filesystem::exists(dir.file("r.sqlite"))) continue;
-    try {
-      ResultStore store(dir.file("r.sqlite"));
-      completed = store.query_int("SELECT count(*) FROM runs WHERE status = 'completed'");
-    } catch (const StoreError&) {
-    }
-  }
+  const int64_t completed = testing::wait_until_positive(
+      dir.file("r.sqlite"), "SELECT count(*) FROM runs WHERE status = 'completed'");
   ASSERT_GT(completed, 0);
   ::kill(driver, SIGKILL);
   ::waitpid(driver, nullptr, 0);
