@@ -22,6 +22,7 @@
 #include "experiment/reproduction_figures.hpp"
 #include "experiment/run_comparison.hpp"
 #include "experiment/run_report.hpp"
+#include "store/result_store.hpp"
 
 namespace {
 
@@ -191,6 +192,10 @@ int main(int argc, char** argv) {
     return usage_error(e.what());
   } catch (const corrmp::ReproductionError& e) {
     return usage_error(e.what());
+  } catch (const corrmp::StoreError& e) {
+    // A database that cannot be used (damaged, a directory, not SQLite) is bad input.
+    std::cerr << "report: " << e.what() << "\n";
+    return 2;
   } catch (const std::exception& e) {
     std::cerr << "report: " << e.what() << "\n";
     return 1;

@@ -66,7 +66,7 @@ void expect_refused(const TempDir& dir, const std::string& problem) {
                          "); move it aside or choose another database file\n");
   EXPECT_FALSE(fs::exists(dir.file("runs"))) << "no run directory for a run never recorded";
   const Outcome tool = report(dir);
-  EXPECT_NE(tool.exit_code, 0);
+  EXPECT_EQ(tool.exit_code, 2);
   EXPECT_EQ(lines(tool.err), 1) << tool.err;
   EXPECT_NE(tool.err.find(db + ": not a usable result database"), std::string::npos) << tool.err;
   EXPECT_EQ(bytes_of(db), before) << "the damaged database is left as it was";
