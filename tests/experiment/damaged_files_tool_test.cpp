@@ -1,16 +1,15 @@
 // End-to-end tests of run_experiment and report on damaged files: a result
-// database of garbage bytes or truncated gives one line naming it and a
-// non-zero exit with nothing written; a 0-byte one is used as new with a
+// database of garbage bytes or truncated gives one line naming it and exit 2
+// with nothing written; a 0-byte one is used as new with a
 // notice; a demonstration cache replaced by a directory is reported and the
 // run goes through, every time.
 #include <gtest/gtest.h>
-#include <sys/wait.h>
 
 #include <filesystem>
 #include <fstream>
 #include <sstream>
 
-#include "config/test_files.hpp"
+#include "report_tool.hpp"
 #include "store/result_store.hpp"
 
 namespace corrmp {
@@ -19,32 +18,16 @@ namespace {
 namespace fs = std::filesystem;
 using testing::TempDir;
 
-struct Outcome {
-  int exit_code = -1;
-  std::string err;
-};
+using testing::ToolOutcome;
+using Outcome = ToolOutcome;
 
-std::string bytes_of(const std::string& path) {
-  std::ifstream in(path, std::ios::binary);
-  std::stringstream buffer;
-  buffer << in.rdbuf();
-  return buffer.str();
-}
-
-Outcome run_tool(const TempDir& dir, const std::string& command_line) {
-  const std::string out = dir.file("stdout.txt"), err = dir.file("stderr.txt");
-  const int status = std::system((command_line + " >" + out + " 2>" + err).c_str());
-  return {WIFEXITED(status) ? WEXITSTATUS(status) : -1, bytes_of(err)};
-}
+std::string bytes_of(const std::string& path) { return testing::read(path); }
 
 Outcome run_experiment(const TempDir& dir, const std::string& args) {
-  return run_tool(dir, std::string(RUN_EXPERIMENT_BIN) + " " + args + " --db " +
-                           dir.file("r.sqlite") + " --out " + dir.file("runs"));
+  return testing::run_experiment_tool(dir, args);
 }
 
-Outcome report(const TempDir& dir) {
-  return run_tool(dir, std::string(REPORT_BIN) + " --db " + dir.file("r.sqlite"));
-}
+Outcome report(const TempDir& dir) { return testing::report_tool(dir, ""); }
 
 int lines(const std::string& text) {
   return static_cast<int>(std::count(text.begin(), text.end(), '\n'));
