@@ -1,13 +1,11 @@
 // End-to-end tests of the run_experiment command: exit codes, one-line config
 // errors with nothing written to the database, run directories, determinism.
 #include <gtest/gtest.h>
-#include <sys/wait.h>
 
 #include <filesystem>
 #include <fstream>
-#include <sstream>
 
-#include "config/test_files.hpp"
+#include "report_tool.hpp"
 #include "store/result_store.hpp"
 
 namespace corrmp {
@@ -15,26 +13,12 @@ namespace {
 
 using testing::TempDir;
 
-struct Outcome {
-  int exit_code = -1;
-  std::string out;
-  std::string err;
-};
+using Outcome = testing::ToolOutcome;
 
-std::string read_file(const std::string& path) {
-  std::ifstream in(path);
-  std::stringstream buffer;
-  buffer << in.rdbuf();
-  return buffer.str();
-}
+std::string read_file(const std::string& path) { return testing::read(path); }
 
 Outcome run(const TempDir& dir, const std::string& args) {
-  const std::string out = dir.file("stdout.txt"), err = dir.file("stderr.txt");
-  const std::string command = std::string(RUN_EXPERIMENT_BIN) + " " + args + " --db " +
-                              dir.file("r.sqlite") + " --out " + dir.file("runs") + " >" + out +
-                              " 2>" + err;
-  const int status = std::system(command.c_str());
-  return {WIFEXITED(status) ? WEXITSTATUS(status) : -1, read_file(out), read_file(err)};
+  return testing::run_experiment_tool(dir, args);
 }
 
 const std::string kGood =
