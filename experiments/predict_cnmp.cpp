@@ -12,6 +12,7 @@
 #include "command_line.hpp"
 
 #include "cnmp/cnmp_model.hpp"
+#include "nn/model_file.hpp"
 
 namespace {
 
@@ -113,6 +114,9 @@ int main(int argc, char** argv) {
     }
     return 0;
   } catch (const std::invalid_argument& e) {
+    std::cerr << "predict_cnmp: " << e.what() << "\n";
+    return 2;
+  } catch (const corrmp::nn::ModelFileError& e) {  // bad input, like a bad option
     std::cerr << "predict_cnmp: " << e.what() << "\n";
     return 2;
   } catch (const std::exception& e) {

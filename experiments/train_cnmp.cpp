@@ -9,6 +9,7 @@
 #include "command_line.hpp"
 
 #include "cnmp/cnmp_trainer.hpp"
+#include "cnmp/raw_trajectory.hpp"
 #include "cnmp/trajectory_dataset.hpp"
 #include "core/interrupt.hpp"
 #include "core/logging.hpp"
@@ -113,6 +114,9 @@ int main(int argc, char** argv) {
   } catch (const corrmp::Interrupted& e) {
     std::cerr << "train_cnmp: " << e.what() << "\n";
     return 130;
+  } catch (const corrmp::DataError& e) {  // bad input, like a bad option
+    std::cerr << "train_cnmp: " << e.what() << "\n";
+    return 2;
   } catch (const std::exception& e) {
     std::cerr << "train_cnmp: " << e.what() << "\n";
     return 1;

@@ -152,7 +152,7 @@ void Cnmp<S>::load_from(const nn::ModelFile& file) {
   if (stored.d_x != a.d_x || stored.d_y != a.d_y || stored.d_context != a.d_context ||
       stored.encoder_layers != a.encoder_layers || stored.decoder_layers != a.decoder_layers ||
       stored.width != a.width) {
-    throw std::runtime_error(fmt::format(
+    throw nn::ModelFileError(fmt::format(
         "model file '{}': CNMP architecture (d_x {}, d_y {}, context {}, layers {}/{}, width {}) "
         "differs from the expected (d_x {}, d_y {}, context {}, layers {}/{}, width {})",
         file.source, stored.d_x, stored.d_y, stored.d_context, stored.encoder_layers,

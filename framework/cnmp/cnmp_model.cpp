@@ -72,7 +72,7 @@ void CnmpModel::save(const std::string& path) {
 std::unique_ptr<CnmpModel> CnmpModel::load(const std::string& path) {
   const nn::ModelFile file = nn::ModelFile::read(path);
   if (file.hyper.count("model") == 0 || file.hyper.at("model") != "cnmp") {
-    throw std::runtime_error(fmt::format("model file '{}': not a CNMP model", path));
+    throw nn::ModelFileError(fmt::format("model file '{}': not a CNMP model", path));
   }
   const CnmpArchitecture architecture = Cnmp<float>::architecture_of(file);
   auto model = std::make_unique<CnmpModel>(architecture, 0);

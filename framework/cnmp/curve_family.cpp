@@ -35,7 +35,7 @@ Demonstration CurveFamily::make(double context, Rng& rng) const {
   return Demonstration{JsonObject().add("context", context).str(), {segment}, ""};
 }
 
-std::vector<MemoryNeed> CurveFamily::memory_needs() const {
+std::vector<MemoryNeed> CurveFamily::memory_needs(const Environment*) const {
   const double curves = static_cast<double>(params_.train) + params_.validation;
   // x, y and the normalised copies training makes, in doubles and floats.
   const double bytes = curves * params_.time_steps * 2.0 * (2 * sizeof(double) + sizeof(float));

@@ -37,8 +37,8 @@ class CurveFamily : public DemonstrationSource {
   std::vector<std::string> segments() const override { return {"full"}; }
   bool provides_contexts() const override { return true; }
   Demonstration make(double context, Rng& rng) const;
-  std::vector<MemoryNeed> memory_needs() const override;
-  int64_t longest_trajectory() const override { return params_.time_steps; }
+  std::vector<MemoryNeed> memory_needs(const Environment* environment) const override;
+  int64_t longest_trajectory(const Environment*) const override { return params_.time_steps; }
 
  private:
   CurveFamilyParams params_;

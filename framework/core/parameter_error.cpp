@@ -54,4 +54,10 @@ const ConfigNode& node_at(const ConfigNode& section, const std::string& key) {
   return *node;
 }
 
+SourceLocation stated_location(const ConfigNode& section, const std::string& key,
+                               const SourceLocation& otherwise) {
+  const SourceLocation& where = node_at(section, key).where();
+  return where.file == "<default>" ? otherwise : where;
+}
+
 }  // namespace corrmp

@@ -30,4 +30,9 @@ void check_file_name(const std::string& key, const std::string& name);
 // way when the path goes further than the config (a default not written down).
 const ConfigNode& node_at(const ConfigNode& section, const std::string& key);
 
+// Where the value at `key` under `section` was written (a file line, an override), or
+// `otherwise` when it is a default nobody wrote down.
+SourceLocation stated_location(const ConfigNode& section, const std::string& key,
+                               const SourceLocation& otherwise);
+
 }  // namespace corrmp

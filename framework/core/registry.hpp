@@ -56,10 +56,8 @@ class Registry {
                 try {
                   return std::unique_ptr<Base>(make(params, context));
                 } catch (const ParameterError& e) {
-                  const ConfigNode& value = node_at(node, e.key());
-                  const bool stated = value.where().file != "<default>";
-                  throw ConfigError(stated ? value.where() : node.where(), path + "." + e.key(),
-                                    e.what());
+                  throw ConfigError(stated_location(node, e.key(), node.where()),
+                                    path + "." + e.key(), e.what());
                 } catch (const std::invalid_argument& e) {
                   // A component refusing its parameters is a config error too.
                   throw ConfigError(node.where(), path, e.what());

@@ -83,9 +83,12 @@ class DemonstrationSource {
   // parameters would now give different demonstrations.
   virtual std::string version() const { return "1"; }
   // The memory the collected demonstrations will take with the declared sizes
-  // (checked at load), and their longest trajectory when the config fixes it (else 0).
-  virtual std::vector<MemoryNeed> memory_needs() const { return {}; }
-  virtual int64_t longest_trajectory() const { return 0; }
+  // (checked at load), and their longest trajectory when the config fixes it (else 0);
+  // `environment` is the experiment's, or null.
+  virtual std::vector<MemoryNeed> memory_needs(const Environment* /*environment*/) const {
+    return {};
+  }
+  virtual int64_t longest_trajectory(const Environment* /*environment*/) const { return 0; }
 };
 
 }  // namespace corrmp

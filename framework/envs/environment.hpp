@@ -118,6 +118,8 @@ class Environment {
   // execution stopped (a physics blow-up, an invalid point).
   virtual std::string execute(const std::string& segment, const Eigen::MatrixXd& trajectory) = 0;
   virtual Observation observe(bool with_image) = 0;
+  // The size of the images observe(true) takes; empty without a camera.
+  virtual cv::Size camera_size() const { return {}; }
   // The names of the state values every observation holds (checked at load
   // against what the context extractor reads).
   virtual std::vector<std::string> state_names() const = 0;

@@ -171,9 +171,10 @@ struct LocatedNeed {
 // behind the largest need, rather than failing mid-run (or taking the machine down).
 void check_memory(const Experiment& e) {
   std::vector<LocatedNeed> needs;
-  const int64_t longest = e.demonstrations ? e.demonstrations->longest_trajectory() : 0;
+  const Environment* environment = e.environment.get();
+  const int64_t longest = e.demonstrations ? e.demonstrations->longest_trajectory(environment) : 0;
   if (e.demonstrations) {
-    for (auto& need : e.demonstrations->memory_needs())
+    for (auto& need : e.demonstrations->memory_needs(environment))
       needs.push_back({need, &*e.config.demonstrations});
   }
   if (e.context_extractor) {
@@ -191,9 +192,8 @@ void check_memory(const Experiment& e) {
   const auto largest =
       std::max_element(needs.begin(), needs.end(),
                        [](const auto& a, const auto& b) { return a.need.bytes < b.need.bytes; });
-  const ConfigNode& value = node_at(*largest->spec->node, largest->need.key);
-  const bool stated = value.where().file != "<default>";
-  throw ConfigError(stated ? value.where() : largest->spec->node->find("type")->where(),
+  const ConfigNode& section = *largest->spec->node;
+  throw ConfigError(stated_location(section, largest->need.key, section.find("type")->where()),
                     largest->spec->path + "." + largest->need.key,
                     fmt::format("the declared sizes need about {} of memory, {} of it for {}; "
                                 "this machine has {}: reduce them",

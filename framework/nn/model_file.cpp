@@ -24,7 +24,7 @@ constexpr std::size_t kChecksumSize = 8;  // trailing FNV-1a 64
 using Bytes = std::string;  // raw file contents
 
 [[noreturn]] void fail(const std::string& path, const std::string& problem) {
-  throw std::runtime_error(fmt::format("model file '{}': {}", path, problem));
+  throw ModelFileError(fmt::format("model file '{}': {}", path, problem));
 }
 
 std::uint64_t fnv1a64(const char* data, std::size_t size) {
@@ -180,7 +180,9 @@ void ModelFile::write(const std::string& path) const {
   try {
     write_file_atomically(path, file);
   } catch (const FileError& e) {
-    fail(path, e.problem());  // the temporary file is gone and `path` is as it was
+    // The temporary file is gone and `path` is as it was; a write failure (a full disk) is not
+    // a bad model file.
+    throw std::runtime_error(fmt::format("model file '{}': {}", path, e.problem()));
   }
 }
 

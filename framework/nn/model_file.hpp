@@ -23,6 +23,7 @@
 
 #include <cstdint>
 #include <map>
+#include <stdexcept>
 #include <string>
 #include <vector>
 
@@ -38,6 +39,12 @@ struct NamedTensor {
   std::int64_t numel() const;
 };
 
+// A model file that cannot be used: missing, unreadable, corrupt, or not the model a reader
+// expects. what() is "model file '<path>': <problem>".
+class ModelFileError : public std::runtime_error {
+  using std::runtime_error::runtime_error;
+};
+
 struct ModelFile {
   static constexpr std::uint32_t kFormatVersion = 1;
 
@@ -49,7 +56,7 @@ struct ModelFile {
   /// path on failure, leaving a previous file there untouched, or on an invalid tensor
   /// (duplicate name, data size not matching its shape).
   void write(const std::string& path) const;
-  /// Reads and validates a file; throws std::runtime_error naming the path and the problem.
+  /// Reads and validates a file; throws ModelFileError naming the path and the problem.
   static ModelFile read(const std::string& path);
 
   void set_hyper_int(const std::string& key, std::int64_t value);

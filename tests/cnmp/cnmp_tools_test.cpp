@@ -3,7 +3,9 @@
 #include <gtest/gtest.h>
 #include <sys/wait.h>
 
+#include <algorithm>
 #include <cmath>
+#include <filesystem>
 #include <fstream>
 #include <sstream>
 
@@ -70,13 +72,26 @@ TEST(CnmpTools, BadInputGivesAClearErrorAndNonZeroExit) {
   EXPECT_EQ(run(fmt::format("{} --data {} --y nope --out {}", TRAIN_CNMP_BIN, dir.file("demos"),
                             dir.file("m.cnmp")),
                 &err, &dir),
-            1);
+            2);
   EXPECT_NE(err.find("no column 'nope'"), std::string::npos) << err;
-  EXPECT_EQ(run(fmt::format("{} --data {}", TRAIN_CNMP_BIN, dir.file("demos")), &err, &dir), 2);
-  EXPECT_EQ(run(fmt::format("{} --model {} --obs 0,0", PREDICT_CNMP_BIN, dir.file("none.cnmp")),
+  // Bad data and unusable model files are bad input too: exit 2, one line naming the file.
+  dir.write("bad/d.csv", "time,px\n0,1\n1,x\n");
+  EXPECT_EQ(run(fmt::format("{} --data {} --y px --out {}", TRAIN_CNMP_BIN, dir.file("bad"),
+                            dir.file("m.cnmp")),
                 &err, &dir),
-            1);
-  EXPECT_NE(err.find("none.cnmp"), std::string::npos) << err;
+            2);
+  EXPECT_NE(err.find("d.csv:3:"), std::string::npos) << err;
+  dir.write("garbage.cnmp", "not a model");
+  std::filesystem::create_directories(dir.file("directory.cnmp"));
+  for (const char* model : {"none.cnmp", "garbage.cnmp", "directory.cnmp"}) {
+    EXPECT_EQ(
+        run(fmt::format("{} --model {} --obs 0,0", PREDICT_CNMP_BIN, dir.file(model)), &err, &dir),
+        2)
+        << model;
+    EXPECT_NE(err.find(model), std::string::npos) << err;
+    EXPECT_EQ(std::count(err.begin(), err.end(), '\n'), 1) << err;
+  }
+  EXPECT_EQ(run(fmt::format("{} --data {}", TRAIN_CNMP_BIN, dir.file("demos")), &err, &dir), 2);
   ASSERT_EQ(run(fmt::format("{} --data {} --time time --y px,py --context goal --updates 10 "
                             "--width 4 --out {} --quiet",
                             TRAIN_CNMP_BIN, dir.file("demos"), dir.file("m.cnmp"))),

@@ -68,6 +68,16 @@ TEST(HostileConfigs, AbsurdSizesNamesAndListsAreConfigErrorsBeforeAnythingIsWrit
       {tiny + " demonstrations.time_steps=100000 policy.training.batch_size=1048576 "
               "policy.training.max_targets=100000 policy.network.width=4096",
        "policy.training.batch_size: the declared sizes need about"},
+      // An expert's recordings: camera images at every segment start, and trajectories.
+      {config("corridor_ae.yaml") + " environment.camera.width=2048 environment.camera.height=2048"
+                                    " demonstrations.train=100000 demonstrations.validation=100000",
+       "demonstrations.train: the declared sizes need about"},
+      {config("rope_color.yaml") + " environment.camera.width=2048 environment.camera.height=2048"
+                                   " demonstrations.train=100000",
+       "RGB-D images of 2048x2048 pixels"},
+      {config("corridor_pc.yaml") + " environment.pre_points=10000 environment.cor_points=10000"
+                                    " environment.post_points=10000 demonstrations.train=100000",
+       "demonstrations of 60000 trajectory points"},
   };
   for (const auto& [args, expected] : cases) {
     const ToolOutcome outcome = run_experiment_tool(dir, args);

@@ -20,6 +20,7 @@
 
 #include "core/config/field_rule.hpp"
 #include "data/demonstrations.hpp"
+#include "data/expert_memory.hpp"
 #include "envs/corridor_push/corridor_push.hpp"
 
 namespace corrmp {
@@ -56,6 +57,13 @@ class CorridorExpert : public DemonstrationSource {
   std::string environment_type() const override { return "corridor_push"; }
   bool records_images() const override { return params_.images; }
   bool can_demonstrate() const override { return true; }
+  std::vector<MemoryNeed> memory_needs(const Environment* environment) const override {
+    return expert_memory_needs(environment,
+                               {params_.train + params_.validation, params_.images ? 2 : 0});
+  }
+  int64_t longest_trajectory(const Environment* environment) const override {
+    return expert_longest_trajectory(environment);
+  }
   // 5: the first per-source version (the pipeline's global key was at v4);
   // 6: every attempt draws from its own stream (parallel collection).
   std::string version() const override { return "6"; }

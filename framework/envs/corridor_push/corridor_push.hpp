@@ -32,6 +32,7 @@ class CorridorPush : public Environment {
   Eigen::RowVectorXd effector_position() const override;
   std::string execute(const std::string& segment, const Eigen::MatrixXd& trajectory) override;
   Observation observe(bool with_image) override;
+  cv::Size camera_size() const override { return {params_.camera.width, params_.camera.height}; }
   std::vector<std::string> state_names() const override;
   Outcome outcome() const override;
   std::string classify_decision(const Eigen::MatrixXd& trajectory) const override;

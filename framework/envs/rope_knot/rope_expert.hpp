@@ -16,6 +16,7 @@
 
 #include "core/config/field_rule.hpp"
 #include "data/demonstrations.hpp"
+#include "data/expert_memory.hpp"
 #include "envs/rope_knot/rope_knot.hpp"
 
 namespace corrmp {
@@ -51,6 +52,13 @@ class RopeExpert : public DemonstrationSource {
   std::string environment_type() const override { return "rope_knot"; }
   bool records_images() const override { return params_.images; }
   bool can_demonstrate() const override { return true; }
+  std::vector<MemoryNeed> memory_needs(const Environment* environment) const override {
+    return expert_memory_needs(environment,
+                               {params_.train + params_.validation, params_.images ? 3 : 0});
+  }
+  int64_t longest_trajectory(const Environment* environment) const override {
+    return expert_longest_trajectory(environment);
+  }
   Demonstration demonstrate(Environment& environment, const Scenario& scenario,
                             bool with_images) override;
   // 2: every attempt draws from its own stream (parallel collection).
