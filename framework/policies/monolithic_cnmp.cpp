@@ -26,7 +26,9 @@ std::vector<MemoryNeed> MonolithicCnmp::memory_needs(int64_t longest) const {
 
 std::vector<PolicyTrainingSummary> MonolithicCnmp::fit(const std::vector<Demonstration>& train,
                                                        const std::vector<Demonstration>& validation,
-                                                       Rng& rng) {
+                                                       Rng rng, Networks which) {
+  // The one network reads the skill's context.
+  if (which == Networks::without_context) return {};
   const auto train_data = segment_trajectories(train, params_.segment, true);
   const auto validation_data = segment_trajectories(validation, params_.segment, true);
   CnmpArchitecture architecture = params_.network;

@@ -39,8 +39,8 @@ class MonolithicCnmp : public Policy {
   MonolithicCnmp(const MonolithicCnmpParams& params, uint64_t seed);
 
   std::vector<PolicyTrainingSummary> fit(const std::vector<Demonstration>& train,
-                                         const std::vector<Demonstration>& validation,
-                                         Rng& rng) override;
+                                         const std::vector<Demonstration>& validation, Rng rng,
+                                         Networks which = Networks::all) override;
   std::vector<std::string> segments() const override { return {params_.segment}; }
   std::vector<std::string> data_segments() const override;
   std::vector<std::string> context_segments() const override { return {params_.segment}; }

@@ -21,15 +21,23 @@ struct PolicyTrainingSummary {
   int64_t parameters = 0;
 };
 
+// Which of a policy's networks a fit() call trains. The pipeline trains the
+// networks that read no context while the context extractor fits, then the
+// others (docs/architecture.md, "Threads"); `all` trains every one.
+enum class Networks { all, without_context, with_context };
+
 class Policy {
  public:
   virtual ~Policy() = default;
 
-  // Learns every segment network from the training demonstrations, choosing
-  // checkpoints on the validation demonstrations.
+  // Learns the `which` networks from the training demonstrations, choosing
+  // checkpoints on the validation demonstrations; networks it does not train
+  // stay as they were. Every network's training depends only on `rng`'s state
+  // and the data, so fitting the two halves (both from the same `rng`) gives
+  // the models one fit of all gives.
   virtual std::vector<PolicyTrainingSummary> fit(const std::vector<Demonstration>& train,
                                                  const std::vector<Demonstration>& validation,
-                                                 Rng& rng) = 0;
+                                                 Rng rng, Networks which = Networks::all) = 0;
 
   // The segments this policy generates, in execution order.
   virtual std::vector<std::string> segments() const = 0;

@@ -44,17 +44,21 @@ SegmentedCnmp::SegmentedCnmp(const SegmentedCnmpParams& params, uint64_t seed)
 
 // The segment networks are independent, so they train concurrently (core/thread_budget.hpp).
 // Each trains on its own stream, derived from one draw of `rng` and the segment's name, so the
-// models are the same whatever the number of threads.
+// models are the same whatever the number of threads, and whichever networks a call trains.
 std::vector<PolicyTrainingSummary> SegmentedCnmp::fit(const std::vector<Demonstration>& train,
                                                       const std::vector<Demonstration>& validation,
-                                                      Rng& rng) {
-  models_.clear();
+                                                      Rng rng, Networks which) {
   const uint64_t training_seed = rng();
-  const size_t count = params_.segments.size();
+  std::vector<const SegmentSpec*> wanted;
+  for (const auto& segment : params_.segments) {
+    if (which == Networks::all || (which == Networks::with_context) == segment.use_context)
+      wanted.push_back(&segment);
+  }
+  const size_t count = wanted.size();
   std::vector<PolicyTrainingSummary> summaries(count);
   std::vector<std::unique_ptr<CnmpModel>> models(count);
   parallel_for(static_cast<int>(count), [&](int index) {
-    const SegmentSpec& segment = params_.segments[static_cast<size_t>(index)];
+    const SegmentSpec& segment = *wanted[static_cast<size_t>(index)];
     const auto train_data = segment_trajectories(train, segment.name, segment.use_context);
     const auto validation_data =
         segment_trajectories(validation, segment.name, segment.use_context);
@@ -73,7 +77,7 @@ std::vector<PolicyTrainingSummary> SegmentedCnmp::fit(const std::vector<Demonstr
                                 "train " + segment.name);
     models[static_cast<size_t>(index)] = std::move(model);
   });
-  for (size_t i = 0; i < count; ++i) models_[params_.segments[i].name] = std::move(models[i]);
+  for (size_t i = 0; i < count; ++i) models_[wanted[i]->name] = std::move(models[i]);
   return summaries;
 }
 

@@ -46,8 +46,8 @@ class SegmentedCnmp : public Policy {
   SegmentedCnmp(const SegmentedCnmpParams& params, uint64_t seed);
 
   std::vector<PolicyTrainingSummary> fit(const std::vector<Demonstration>& train,
-                                         const std::vector<Demonstration>& validation,
-                                         Rng& rng) override;
+                                         const std::vector<Demonstration>& validation, Rng rng,
+                                         Networks which = Networks::all) override;
   std::vector<std::string> segments() const override;
   std::vector<std::string> context_segments() const override;
   CnmpPrediction generate(const std::string& segment, const Eigen::MatrixXd& observations,

@@ -36,7 +36,8 @@ class ReplayingPolicy : public Policy {
     nominal_corridor_x_ = own_.corridor_x();
   }
   std::vector<PolicyTrainingSummary> fit(const std::vector<Demonstration>&,
-                                         const std::vector<Demonstration>&, Rng&) override {
+                                         const std::vector<Demonstration>&, Rng,
+                                         Networks) override {
     return {};
   }
   std::vector<std::string> segments() const override { return {"full"}; }
@@ -175,7 +176,8 @@ class LineExpert : public DemonstrationSource {
 class LinePolicy : public Policy {
  public:
   std::vector<PolicyTrainingSummary> fit(const std::vector<Demonstration>&,
-                                         const std::vector<Demonstration>&, Rng&) override {
+                                         const std::vector<Demonstration>&, Rng,
+                                         Networks) override {
     return {};
   }
   std::vector<std::string> segments() const override { return {"move", "nudge"}; }

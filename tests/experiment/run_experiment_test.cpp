@@ -267,7 +267,7 @@ TEST(RunExperiment, ATinyCorridorRunRecordsTrialsAndThePapersMetrics) {
             std::string::npos);
 }
 
-TEST(RunExperiment, ATinyAutoencoderRunWritesItsFiguresModelAndTestError) {
+TEST(RunExperiment, ATinyAutoencoderRunWritesItsFiguresAndGivesTheSameResultsOnOneOrTwoThreads) {
   TempDir dir;
   const std::string args =
       std::string(PROJECT_DIR) +
@@ -275,7 +275,8 @@ TEST(RunExperiment, ATinyAutoencoderRunWritesItsFiguresModelAndTestError) {
       "policy.training.updates=200 policy.training.validate_every=100 policy.network.width=16 "
       "evaluation.trials=2 context.network.image_size=16 context.network.epochs=2 "
       "context.network.filters=[4,4,8,8,8] context.network.latent_size=3";
-  const Outcome first = run(dir, args);
+  // Two threads: the pre-MP's network trains beside the autoencoder.
+  const Outcome first = run(dir, args + " --threads 2");
   ASSERT_EQ(first.exit_code, 0) << first.err;
   ResultStore store(dir.file("r.sqlite"));
   const std::string run_dir = store.query_text("SELECT out_dir FROM runs WHERE id = 1");
@@ -298,6 +299,13 @@ TEST(RunExperiment, ATinyAutoencoderRunWritesItsFiguresModelAndTestError) {
   EXPECT_EQ(store.query_int("SELECT COUNT(*) FROM (SELECT name, value FROM metrics WHERE run_id = "
                             "1 EXCEPT SELECT name, value FROM metrics WHERE run_id = 2)"),
             0);
+  // One thread, everything trained afresh one after another: the same results.
+  const Outcome third = run(dir, args + " --threads 1 --no-cache");
+  ASSERT_EQ(third.exit_code, 0) << third.err;
+  EXPECT_EQ(store.query_int("SELECT COUNT(*) FROM (SELECT name, value FROM metrics WHERE run_id = "
+                            "1 EXCEPT SELECT name, value FROM metrics WHERE run_id = 3)"),
+            0);
+  EXPECT_GT(store.query_int("SELECT COUNT(*) FROM metrics WHERE run_id = 3"), 10);
 }
 
 // A cache file that cannot be read is reported and collected again;

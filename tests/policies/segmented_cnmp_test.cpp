@@ -60,13 +60,23 @@ struct Trained {
   std::vector<Eigen::MatrixXd> means;  // each segment's prediction for a fixed query
 };
 
-Trained train_with_budget(int budget) {
+// Trains every network in one fit, or (`halves`) the context-free ones and then the others,
+// as the pipeline does while a context extractor fits.
+Trained train_with_budget(int budget, bool halves = false) {
   const int saved = thread_budget();
   set_thread_budget(budget);
   SegmentedCnmp policy(small_params(), 11);
-  Rng rng(5);
+  const Rng rng(5);
+  const auto train = demonstrations(12, 1);
+  const auto validation = demonstrations(4, 2);
   Trained trained;
-  trained.summaries = policy.fit(demonstrations(12, 1), demonstrations(4, 2), rng);
+  if (halves) {
+    trained.summaries = policy.fit(train, validation, rng, Networks::without_context);
+    for (auto& s : policy.fit(train, validation, rng, Networks::with_context))
+      trained.summaries.push_back(s);
+  } else {
+    trained.summaries = policy.fit(train, validation, rng);
+  }
   set_thread_budget(saved);
   const Eigen::MatrixXd query = Eigen::VectorXd::LinSpaced(7, 0.0, 1.0);
   Eigen::MatrixXd observation(1, 3);
@@ -78,12 +88,13 @@ Trained train_with_budget(int budget) {
   return trained;
 }
 
-TEST(SegmentedCnmp, TrainsBitIdenticalNetworksWhateverTheThreadBudget) {
+TEST(SegmentedCnmp, TrainsBitIdenticalNetworksWhateverTheThreadBudgetOrPhases) {
   const Trained one = train_with_budget(1);
   const Trained two = train_with_budget(2);
   const Trained four = train_with_budget(4);
+  const Trained halves = train_with_budget(2, true);
   ASSERT_EQ(one.summaries.size(), 3u);
-  for (const Trained* other : {&two, &four}) {
+  for (const Trained* other : {&two, &four, &halves}) {
     ASSERT_EQ(other->summaries.size(), 3u);
     for (size_t s = 0; s < 3; ++s) {
       EXPECT_EQ(other->summaries[s].segment, one.summaries[s].segment);
@@ -105,7 +116,7 @@ TEST(SegmentedCnmp, AMissingSegmentFailsNamingIt) {
   SegmentedCnmpParams params = small_params();
   params.segments.push_back({"d", true});
   SegmentedCnmp policy(params, 11);
-  Rng rng(5);
+  const Rng rng(5);
   try {
     policy.fit(demonstrations(3, 1), demonstrations(1, 2), rng);
     ADD_FAILURE() << "no error";
