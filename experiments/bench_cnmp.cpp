@@ -81,6 +81,9 @@ void run_updates(benchmark::State& state, int batch_size, int max_observations, 
 void BM_update_paper_b1(benchmark::State& state) { run_updates(state, 1, 5, 1); }
 void BM_update_b32(benchmark::State& state) { run_updates(state, 32, 5, 1); }
 void BM_update_b32_targets10(benchmark::State& state) { run_updates(state, 32, 5, 10); }
+// The default configs' step (configs/common/cnmp.yaml): 8 demonstrations, up to 5
+// observations and 10 targets each.
+void BM_update_defaults_b8_targets10(benchmark::State& state) { run_updates(state, 8, 5, 10); }
 
 void BM_predict_200_points(benchmark::State& state) {
   const CnmpArchitecture a = paper_architecture();
@@ -102,6 +105,7 @@ void BM_predict_200_points(benchmark::State& state) {
 BENCHMARK(BM_update_paper_b1);
 BENCHMARK(BM_update_b32);
 BENCHMARK(BM_update_b32_targets10);
+BENCHMARK(BM_update_defaults_b8_targets10);
 BENCHMARK(BM_predict_200_points)->Unit(benchmark::kMicrosecond);
 
 }  // namespace

@@ -4,8 +4,21 @@
 #include <stdexcept>
 
 #include "nn/check.hpp"
+#include "nn/gemm.hpp"
 
 namespace corrmp::nn {
+
+namespace {
+
+// The transposed operand of a product (nn/gemm.hpp), one per thread: a model may predict from
+// several threads at once (the evaluation's trials), so the layer keeps none of its own.
+template <class S>
+Buffer<S>& scratch() {
+  thread_local Buffer<S> buffer;
+  return buffer;
+}
+
+}  // namespace
 
 template <class S>
 Linear<S>::Linear(Index in, Index out, Rng& rng)
@@ -22,7 +35,7 @@ template <class S>
 void Linear<S>::forward(ConstMatRef<S> x, MatRef<S> y) const {
   check_shape("Linear::forward", "x", x, x.rows(), in_features());
   check_shape("Linear::forward", "y", y, x.rows(), out_features());
-  y.noalias() = x * weight_.transpose();
+  gemm<S>(x, Op::kPlain, weight_, Op::kTransposed, y, false, scratch<S>());
   y.rowwise() += bias_;
 }
 
@@ -30,7 +43,7 @@ template <class S>
 void Linear<S>::accumulate_param_grad(ConstMatRef<S> x, ConstMatRef<S> dy) {
   check_shape("Linear::backward", "x", x, x.rows(), in_features());
   check_shape("Linear::backward", "dy", dy, x.rows(), out_features());
-  weight_grad_.noalias() += dy.transpose() * x;
+  gemm<S>(dy, Op::kTransposed, x, Op::kPlain, weight_grad_, true, scratch<S>());
   bias_grad_.noalias() += dy.colwise().sum();
 }
 
@@ -38,7 +51,7 @@ template <class S>
 void Linear<S>::input_grad(ConstMatRef<S> dy, MatRef<S> dx) const {
   check_shape("Linear::backward", "dy", dy, dy.rows(), out_features());
   check_shape("Linear::backward", "dx", dx, dy.rows(), in_features());
-  dx.noalias() = dy * weight_;
+  gemm<S>(dy, Op::kPlain, weight_, Op::kPlain, dx, false, scratch<S>());
 }
 
 template <class S>
