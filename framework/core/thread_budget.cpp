@@ -22,20 +22,6 @@ int hardware_threads() {
 
 std::atomic<int> g_budget{hardware_threads()};
 
-// True on a thread while it runs a task of a parallel loop: loops nested in it run inline.
-thread_local bool t_inside_task = false;
-
-class InsideTask {
- public:
-  InsideTask() : saved_(t_inside_task) { t_inside_task = true; }
-  ~InsideTask() { t_inside_task = saved_; }
-  InsideTask(const InsideTask&) = delete;
-  InsideTask& operator=(const InsideTask&) = delete;
-
- private:
-  bool saved_;
-};
-
 // One loop's shared state: the next index to start, and the first failure.
 class Loop {
  public:
@@ -44,7 +30,7 @@ class Loop {
 
   // Worker `worker` takes indices until none is left, a task failed or a signal arrived.
   void work(int worker) {
-    const InsideTask inside;
+    const InlineLoops inside;
     for (;;) {
       if (interrupt_requested()) {
         interrupted_ = true;
@@ -82,6 +68,13 @@ class Loop {
 
 }  // namespace
 
+// True on a thread while it runs a task of a parallel loop, or an InlineLoops lives on it:
+// loops started there run inline.
+static thread_local bool t_inside_task = false;
+
+InlineLoops::InlineLoops() : saved_(t_inside_task) { t_inside_task = true; }
+InlineLoops::~InlineLoops() { t_inside_task = saved_; }
+
 void set_thread_budget(int n) {
   if (n < 1) throw std::invalid_argument("the thread budget must be at least 1");
   g_budget = n;
@@ -99,7 +92,7 @@ void parallel_for_with_workers(int count, int max_workers,
   const int workers = std::min(std::max(max_workers, 1), parallel_workers(count));
   if (workers == 0) return;
   if (workers == 1) {
-    const InsideTask inside;
+    const InlineLoops inside;
     for (int index = 0; index < count; ++index) {
       check_interrupt();
       task(index, 0);

@@ -1,7 +1,9 @@
 // The process's thread budget and a parallel loop over independent tasks (issue 10: independent
 // networks trained concurrently, demonstrations collected in parallel). The budget is how many
 // threads the parallel stages of this process may keep busy at once: the cores of the machine
-// by default, fewer when several runs share them (run_experiment -j).
+// by default, fewer when several runs share them (run_experiment -j). One exception: with a
+// budget of 2 or more, while a context extractor fits, one more thread trains the policy's
+// networks that read no context, one after another (experiment/pipeline.cpp).
 //
 // parallel_for(count, task) calls task(i) once for each i in [0, count) on up to
 // min(count, thread_budget()) threads, the calling thread among them, and returns when every
@@ -36,6 +38,20 @@ int parallel_workers(int count);
 
 // Runs task(index) for index in [0, count) as described above.
 void parallel_for(int count, const std::function<void(int index)>& task);
+
+// While one lives on a thread, loops started there run inline, as inside a loop's task: a thread
+// the budget does not count (the pipeline's, training the networks that read no context beside a
+// context extractor) keeps to itself.
+class InlineLoops {
+ public:
+  InlineLoops();
+  ~InlineLoops();
+  InlineLoops(const InlineLoops&) = delete;
+  InlineLoops& operator=(const InlineLoops&) = delete;
+
+ private:
+  bool saved_;
+};
 
 // Like parallel_for, on at most `max_workers` threads, also passing the worker (in
 // [0, min(max_workers, parallel_workers(count)))) that runs the task: one worker runs its tasks

@@ -11,8 +11,8 @@ namespace {
 
 // A recorded image is RGB bytes and a float depth per pixel (data/observation.hpp).
 constexpr double kImageBytesPerPixel = 3.0 + sizeof(float);
-// A trajectory value is kept as x and y doubles, plus the float copies training makes.
-constexpr double kTrajectoryBytesPerValue = 2.0 * sizeof(double) + sizeof(float);
+// A trajectory value (time or a column) is a double, plus the float copy training makes.
+constexpr double kTrajectoryBytesPerValue = sizeof(double) + sizeof(float);
 
 }  // namespace
 

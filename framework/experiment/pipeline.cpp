@@ -9,6 +9,7 @@
 #include <fstream>
 #include <future>
 #include <optional>
+#include <system_error>
 
 #include "core/file_lock.hpp"
 #include "core/interrupt.hpp"
@@ -101,10 +102,11 @@ DemonstrationSplit collect_or_reuse(Experiment& experiment, const fs::path& cach
 
 // Fits the context extractor, writes the contexts into `demos`, and fits the policy. With two
 // threads or more, the networks that read no context (the pre-MP's) do not wait for the
-// extractor: they train on a thread of their own, on a copy of the demonstrations, while it fits
-// (the extractor's workers and this thread share the cores; whenever one waits, the other runs).
-// Every network trains on the stream it would get from one fit of all, so the models are the
-// same whatever the number of threads.
+// extractor: one more thread trains them, one after another, on a copy of the demonstrations,
+// while the extractor fits and then while the other networks train (docs/architecture.md,
+// "Threads"). Every network trains on the stream it would get from one fit of all, so the models
+// are the same whatever the number of threads. When the extractor fails, its error is reported
+// once that thread has finished.
 std::vector<PolicyTrainingSummary> fit_extractor_and_policy(Experiment& experiment,
                                                             DemonstrationSplit& demos,
                                                             const fs::path& dir,
@@ -113,12 +115,19 @@ std::vector<PolicyTrainingSummary> fit_extractor_and_policy(Experiment& experime
   const Rng train_rng = experiment.context.seeds.stream("policy.training");
   if (!experiment.context_extractor) return policy.fit(demos.train, demos.validation, train_rng);
 
+  // Declared first, so it outlives the thread that reads it, even when an error unwinds.
+  const bool beside = thread_budget() >= 2;
+  const DemonstrationSplit copy = beside ? demos : DemonstrationSplit{};
   std::future<std::vector<PolicyTrainingSummary>> context_free;
-  const DemonstrationSplit copy = thread_budget() >= 2 ? demos : DemonstrationSplit{};
-  if (thread_budget() >= 2) {
-    context_free = std::async(std::launch::async, [&policy, &copy, train_rng] {
-      return policy.fit(copy.train, copy.validation, train_rng, Networks::without_context);
-    });
+  if (beside) {
+    try {
+      context_free = std::async(std::launch::async, [&policy, &copy, train_rng] {
+        const InlineLoops one_thread;
+        return policy.fit(copy.train, copy.validation, train_rng, Networks::without_context);
+      });
+    } catch (const std::system_error& e) {
+      spdlog::debug("no thread for the networks without context ({}): they train after", e.what());
+    }
   }
   Rng context_rng = experiment.context.seeds.stream("context");
   spdlog::info("fitting the context extractor ({})", experiment.config.context->type);
@@ -130,11 +139,10 @@ std::vector<PolicyTrainingSummary> fit_extractor_and_policy(Experiment& experime
   experiment.context_extractor->write_outputs(dir.string(), demos.validation);
 
   std::vector<PolicyTrainingSummary> summaries =
-      context_free.valid()
-          ? context_free.get()
-          : policy.fit(demos.train, demos.validation, train_rng, Networks::without_context);
-  for (auto& summary :
-       policy.fit(demos.train, demos.validation, train_rng, Networks::with_context)) {
+      policy.fit(demos.train, demos.validation, train_rng, Networks::with_context);
+  for (auto& summary : context_free.valid() ? context_free.get()
+                                            : policy.fit(demos.train, demos.validation, train_rng,
+                                                         Networks::without_context)) {
     summaries.push_back(std::move(summary));
   }
   // In the policy's segment order, as one fit of all reports them.

@@ -34,7 +34,8 @@ class Policy {
   // checkpoints on the validation demonstrations; networks it does not train
   // stay as they were. Every network's training depends only on `rng`'s state
   // and the data, so fitting the two halves (both from the same `rng`) gives
-  // the models one fit of all gives.
+  // the models one fit of all gives. The two halves may be fitted at the same
+  // time on two threads.
   virtual std::vector<PolicyTrainingSummary> fit(const std::vector<Demonstration>& train,
                                                  const std::vector<Demonstration>& validation,
                                                  Rng rng, Networks which = Networks::all) = 0;

@@ -77,6 +77,7 @@ std::vector<PolicyTrainingSummary> SegmentedCnmp::fit(const std::vector<Demonstr
                                 "train " + segment.name);
     models[static_cast<size_t>(index)] = std::move(model);
   });
+  const std::lock_guard<std::mutex> lock(models_mutex_);
   for (size_t i = 0; i < count; ++i) models_[wanted[i]->name] = std::move(models[i]);
   return summaries;
 }

@@ -7,6 +7,7 @@
 
 #include <map>
 #include <memory>
+#include <mutex>
 #include <string>
 #include <vector>
 
@@ -58,6 +59,7 @@ class SegmentedCnmp : public Policy {
  private:
   SegmentedCnmpParams params_;
   uint64_t seed_;
+  std::mutex models_mutex_;  // two fits of disjoint networks may finish at the same time
   std::map<std::string, std::unique_ptr<CnmpModel>> models_;
 };
 
