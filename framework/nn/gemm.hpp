@@ -2,9 +2,10 @@
 // nn/winograd_conv3x3.hpp) and of the fully connected layers (nn/linear.hpp): C = op(A) op(B),
 // or C += op(A) op(B), on row-major views, op(X) being X or X^T.
 //
-// The CNMP's layers (40-80 rows of width 128 per step) gained too: bench_cnmp's
-// BM_update_defaults_b8_targets10 went from 2,590 to 3,710 updates/s (CPU time, one core of a
-// Zen 4 EPYC) when Linear moved from Eigen's products to this kernel.
+// The CNMP's layers (40-80 rows of width 128 per step) gain too: on one core of a Zen 4 EPYC
+// (medians of 5), bench_cnmp's BM_update_defaults_b8_targets10 went from 3,030 to 3,600
+// updates/s and BM_update_b32 from 1,960 to 2,540 when Linear moved from Eigen's products to
+// this kernel.
 //
 // Why not Eigen or a BLAS: the autoencoder's products are small in at least one dimension
 // (K = Cin k k of im2col or Cin of a Winograd term, or M, N = channels) and run thousands of
