@@ -126,6 +126,7 @@ TrainingReport train_cnmp(CnmpModel& model, const std::vector<CnmpTrajectory>& t
   std::string status;
   for (int64_t update = 1; update <= params.updates; ++update) {
     if ((update - 1) % 100 == 0) adam.set_learning_rate(scheduled_learning_rate(params, update));
+    if (update % 1000 == 0) check_interrupt();  // validations may be far apart
     sampler.draw(rng);
     adam.zero_grad();
     const float loss = sampler.step(model.network());

@@ -4,21 +4,18 @@
 #include <fmt/format.h>
 #include <spdlog/spdlog.h>
 
-#include <algorithm>
 #include <filesystem>
 #include <fstream>
-#include <future>
 #include <optional>
-#include <system_error>
 
 #include "core/file_lock.hpp"
 #include "core/interrupt.hpp"
 #include "core/json_writer.hpp"
 #include "core/logging.hpp"
-#include "core/thread_budget.hpp"
 #include "experiment/demonstration_cache.hpp"
 #include "experiment/environment_evaluation.hpp"
 #include "experiment/offline_evaluation.hpp"
+#include "experiment/policy_fitting.hpp"
 #include "experiment/provenance.hpp"
 #include "experiment/training_curves.hpp"
 #include "experiment/trajectory_outputs.hpp"
@@ -100,61 +97,6 @@ DemonstrationSplit collect_or_reuse(Experiment& experiment, const fs::path& cach
   return demos;
 }
 
-// Fits the context extractor, writes the contexts into `demos`, and fits the policy. With two
-// threads or more, the networks that read no context (the pre-MP's) do not wait for the
-// extractor: one more thread trains them, one after another, on a copy of the demonstrations,
-// while the extractor fits and then while the other networks train (docs/architecture.md,
-// "Threads"). Every network trains on the stream it would get from one fit of all, so the models
-// are the same whatever the number of threads. When the extractor fails, its error is reported
-// once that thread has finished.
-std::vector<PolicyTrainingSummary> fit_extractor_and_policy(Experiment& experiment,
-                                                            DemonstrationSplit& demos,
-                                                            const fs::path& dir,
-                                                            const ExtractorCache& cache) {
-  Policy& policy = *experiment.policy;
-  const Rng train_rng = experiment.context.seeds.stream("policy.training");
-  if (!experiment.context_extractor) return policy.fit(demos.train, demos.validation, train_rng);
-
-  // Declared first, so it outlives the thread that reads it, even when an error unwinds.
-  const bool beside = thread_budget() >= 2;
-  const DemonstrationSplit copy = beside ? demos : DemonstrationSplit{};
-  std::future<std::vector<PolicyTrainingSummary>> context_free;
-  if (beside) {
-    try {
-      context_free = std::async(std::launch::async, [&policy, &copy, train_rng] {
-        const InlineLoops one_thread;
-        return policy.fit(copy.train, copy.validation, train_rng, Networks::without_context);
-      });
-    } catch (const std::system_error& e) {
-      spdlog::debug("no thread for the networks without context ({}): they train after", e.what());
-    }
-  }
-  Rng context_rng = experiment.context.seeds.stream("context");
-  spdlog::info("fitting the context extractor ({})", experiment.config.context->type);
-  std::vector<Demonstration> all = demos.train;
-  all.insert(all.end(), demos.validation.begin(), demos.validation.end());
-  experiment.context_extractor->fit(all, cache, context_rng);
-  assign_contexts(*experiment.context_extractor, demos.train);
-  assign_contexts(*experiment.context_extractor, demos.validation);
-  experiment.context_extractor->write_outputs(dir.string(), demos.validation);
-
-  std::vector<PolicyTrainingSummary> summaries =
-      policy.fit(demos.train, demos.validation, train_rng, Networks::with_context);
-  for (auto& summary : context_free.valid() ? context_free.get()
-                                            : policy.fit(demos.train, demos.validation, train_rng,
-                                                         Networks::without_context)) {
-    summaries.push_back(std::move(summary));
-  }
-  // In the policy's segment order, as one fit of all reports them.
-  const std::vector<std::string> order = policy.segments();
-  const auto rank = [&](const PolicyTrainingSummary& s) {
-    return std::find(order.begin(), order.end(), s.segment) - order.begin();
-  };
-  std::stable_sort(summaries.begin(), summaries.end(),
-                   [&](const auto& a, const auto& b) { return rank(a) < rank(b); });
-  return summaries;
-}
-
 // The stages. Each appends what it measured; none invents a number.
 void run_stages(Experiment& experiment, const fs::path& dir, const RunOptions& options,
                 std::vector<TrialRecord>& trials, std::vector<MetricRecord>& metrics) {
@@ -180,7 +122,13 @@ void run_stages(Experiment& experiment, const fs::path& dir, const RunOptions& o
 
   const ExtractorCache extractor_cache{!key.empty() && options.use_cache ? cache_dir.string() : "",
                                        key};
-  const auto summaries = fit_extractor_and_policy(experiment, demos, dir, extractor_cache);
+  if (experiment.context_extractor) {
+    spdlog::info("fitting the context extractor ({})", experiment.config.context->type);
+  }
+  const auto summaries = fit_extractor_and_policy(
+      *experiment.policy, experiment.context_extractor.get(), demos,
+      {experiment.context.seeds.stream("policy.training"),
+       experiment.context.seeds.stream("context"), extractor_cache, dir.string()});
   for (const auto& summary : summaries) {
     spdlog::info(
         "'{}': {} parameters, best validation error {:.4g} (max {:.4g}) at update {} "
