@@ -2,8 +2,9 @@
 // networks trained concurrently, demonstrations collected in parallel). The budget is how many
 // threads the parallel stages of this process may keep busy at once: the cores of the machine
 // by default, fewer when several runs share them (run_experiment -j). One exception: with a
-// budget of 2 or more, while a context extractor fits, one more thread trains the policy's
-// networks that read no context, one after another (experiment/pipeline.cpp).
+// budget of 2 or more, one more thread trains the policy's networks that read no context, one
+// after another, from the moment a context extractor starts fitting until they are trained
+// (experiment/policy_fitting.hpp).
 //
 // parallel_for(count, task) calls task(i) once for each i in [0, count) on up to
 // min(count, thread_budget()) threads, the calling thread among them, and returns when every
