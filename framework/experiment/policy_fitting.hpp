@@ -2,10 +2,10 @@
 // demonstrations, their contexts are set, and the policy's networks learn. With two threads or
 // more, the networks that read no context (the pre-MP's) do not wait for the extractor: one more
 // thread trains them, one after another, on a copy of the demonstrations, while the extractor
-// fits and then while the other networks train (docs/architecture.md, "Threads"). Every network
-// trains on the stream one fit of all would give it, so the models are the same whatever the
-// number of threads. When the extractor fails, that thread's training is abandoned (at its next
-// interrupt check) and the extractor's error is thrown.
+// fits and then while the other networks train (docs/architecture.md, "Caches and determinism").
+// Every network trains on the stream one fit of all would give it, so the models are the same
+// whatever the number of threads. When the extractor fails, that thread's training is abandoned (at
+// its next interrupt check) and the extractor's error is thrown.
 #pragma once
 
 #include <string>

@@ -23,7 +23,7 @@ struct PolicyTrainingSummary {
 
 // Which of a policy's networks a fit() call trains. The pipeline trains the
 // networks that read no context while the context extractor fits, then the
-// others (docs/architecture.md, "Threads"); `all` trains every one.
+// others (docs/architecture.md, "Caches and determinism"); `all` trains every one.
 enum class Networks { all, without_context, with_context };
 
 class Policy {
