@@ -32,6 +32,16 @@ class SetOnError {
   int exceptions_;
 };
 
+// Whether some network of `policy` reads no context (and could train before the contexts exist).
+bool has_context_free_network(const Policy& policy) {
+  const std::vector<std::string> with_context = policy.context_segments();
+  for (const auto& segment : policy.segments()) {
+    if (std::find(with_context.begin(), with_context.end(), segment) == with_context.end())
+      return true;
+  }
+  return false;
+}
+
 void sort_by_segment(const Policy& policy, std::vector<PolicyTrainingSummary>& summaries) {
   const std::vector<std::string> order = policy.segments();
   const auto rank = [&](const PolicyTrainingSummary& s) {
@@ -52,7 +62,7 @@ std::vector<PolicyTrainingSummary> fit_extractor_and_policy(Policy& policy,
 
   // Declared before the thread, so they outlive it even when an error unwinds.
   std::atomic<bool> abandoned{false};
-  const bool beside = thread_budget() >= 2;
+  const bool beside = thread_budget() >= 2 && has_context_free_network(policy);
   const DemonstrationSplit copy = beside ? demos : DemonstrationSplit{};
   std::future<std::vector<PolicyTrainingSummary>> context_free;
   if (beside) {
