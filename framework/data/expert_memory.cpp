@@ -13,6 +13,8 @@ namespace {
 constexpr double kImageBytesPerPixel = 3.0 + sizeof(float);
 // A trajectory value (time or a column) is a double, plus the float copy training makes.
 constexpr double kTrajectoryBytesPerValue = sizeof(double) + sizeof(float);
+// The key the estimates name: the expert's number of training demonstrations.
+constexpr const char* kDemonstrationsKey = "train";
 
 }  // namespace
 
@@ -31,12 +33,12 @@ std::vector<MemoryNeed> expert_memory_needs(const Environment* environment,
   // Each segment, and the whole skill again.
   const double points = 2.0 * static_cast<double>(expert_longest_trajectory(environment));
   std::vector<MemoryNeed> needs{
-      {demonstrations * points * columns * kTrajectoryBytesPerValue, recording.demonstrations_key,
+      {demonstrations * points * columns * kTrajectoryBytesPerValue, kDemonstrationsKey,
        fmt::format("{} demonstrations of {} trajectory points", recording.demonstrations, points)}};
   const cv::Size camera = environment->camera_size();
   if (recording.images_per_demonstration > 0 && !camera.empty()) {
     const double images = demonstrations * recording.images_per_demonstration;
-    needs.push_back({images * camera.area() * kImageBytesPerPixel, recording.demonstrations_key,
+    needs.push_back({images * camera.area() * kImageBytesPerPixel, kDemonstrationsKey,
                      fmt::format("{} demonstrations x {} RGB-D images of {}x{} pixels",
                                  recording.demonstrations, recording.images_per_demonstration,
                                  camera.width, camera.height)});

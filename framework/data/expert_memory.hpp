@@ -6,7 +6,6 @@
 #pragma once
 
 #include <cstdint>
-#include <string>
 #include <vector>
 
 #include "core/memory_need.hpp"
@@ -16,9 +15,8 @@ namespace corrmp {
 class Environment;
 
 struct ExpertRecording {
-  int demonstrations = 0;                    // training and validation
-  int images_per_demonstration = 0;          // 0 when the expert takes no images
-  std::string demonstrations_key = "train";  // the key that sets their number
+  int demonstrations = 0;            // training and validation
+  int images_per_demonstration = 0;  // 0 when the expert takes no images
 };
 
 // Nothing (0) without an environment: the expert is then refused for that.
