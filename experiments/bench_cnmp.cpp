@@ -1,4 +1,5 @@
-// bench_cnmp: CNMP training and prediction speed (Google Benchmark), one thread.
+// bench_cnmp: CNMP training and prediction speed (Google Benchmark), one thread
+// unless a benchmark says otherwise.
 // "paper_b1" is the paper's setting (Section IV: encoder 3 x 128, decoder
 // 4 x 128, Adam; d_x 1, d_y 3, context 1; batch 1, up to 5 observations, 1
 // target): one full update = sampling + forward + backward + Adam step.
@@ -10,6 +11,7 @@
 
 #include "cnmp/batch_sampler.hpp"
 #include "cnmp/cnmp_model.hpp"
+#include "cnmp/parallel_cnmp_step.hpp"
 #include "nn/adam.hpp"
 
 namespace corrmp {
@@ -85,6 +87,26 @@ void BM_update_b32_targets10(benchmark::State& state) { run_updates(state, 32, 5
 // observations and 10 targets each.
 void BM_update_defaults_b8_targets10(benchmark::State& state) { run_updates(state, 8, 5, 10); }
 
+// The default step (8 demonstrations, up to 10 targets) at width state.range(0) (223: the
+// corridor's monolithic baseline) on state.range(1) threads (cnmp/parallel_cnmp_step.hpp).
+void BM_update_parallel(benchmark::State& state) {
+  CnmpArchitecture a = paper_architecture();
+  a.width = static_cast<int>(state.range(0));
+  CnmpModel model(a, 1);
+  const auto data = synthetic_trajectories(a);
+  CnmpTrainingParams params;
+  params.batch_size = 8;
+  params.max_targets = 10;
+  BatchSampler sampler(data, a, params);
+  ParallelCnmpStep updater(model.network(), 1e-4, static_cast<int>(state.range(1)));
+  Rng rng(7);
+  for (auto _ : state) {
+    sampler.draw(rng);
+    benchmark::DoNotOptimize(updater.step(sampler));
+  }
+  state.SetItemsProcessed(state.iterations());
+}
+
 void BM_predict_200_points(benchmark::State& state) {
   const CnmpArchitecture a = paper_architecture();
   CnmpModel model(a, 1);
@@ -106,6 +128,12 @@ BENCHMARK(BM_update_paper_b1);
 BENCHMARK(BM_update_b32);
 BENCHMARK(BM_update_b32_targets10);
 BENCHMARK(BM_update_defaults_b8_targets10);
+BENCHMARK(BM_update_parallel)
+    ->Args({128, 1})
+    ->Args({128, 2})
+    ->Args({223, 1})
+    ->Args({223, 2})
+    ->UseRealTime();
 BENCHMARK(BM_predict_200_points)->Unit(benchmark::kMicrosecond);
 
 }  // namespace

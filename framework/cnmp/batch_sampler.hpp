@@ -71,11 +71,24 @@ class BatchSampler {
   }
 
   // One forward and backward pass of `network` on the drawn batch; returns the loss.
-  float step(Cnmp<float>& network) {
+  float step(Cnmp<float>& network) const {
     return network.train_step(observations_.topRows(obs_rows_), contexts_,
                               target_x_.topRows(target_rows_), target_y_.topRows(target_rows_),
                               counts_);
   }
+
+  // The drawn batch, as step() passes it to the network.
+  nn::ConstMatMap<float> observations() const {
+    return nn::ConstMatMap<float>(observations_.data(), obs_rows_, observations_.cols());
+  }
+  const nn::Mat<float>& contexts() const { return contexts_; }
+  nn::ConstMatMap<float> target_x() const {
+    return nn::ConstMatMap<float>(target_x_.data(), target_rows_, target_x_.cols());
+  }
+  nn::ConstMatMap<float> target_y() const {
+    return nn::ConstMatMap<float>(target_y_.data(), target_rows_, target_y_.cols());
+  }
+  const CnmpBatchCounts& counts() const { return counts_; }
 
   int observation_rows() const { return obs_rows_; }
   int target_rows() const { return target_rows_; }

@@ -81,6 +81,75 @@ S Cnmp<S>::train_step(nn::ConstMatRef<S> observations, nn::ConstMatRef<S> contex
 }
 
 template <class S>
+void Cnmp<S>::prepare_step(nn::ConstMatRef<S> observations, nn::ConstMatRef<S> contexts,
+                           nn::ConstMatRef<S> target_x, const CnmpBatchCounts& counts) {
+  const auto& a = architecture_;
+  encoder_.prepare(observations.rows());
+  encoder_.input() = observations;
+  decoder_.prepare(target_x.rows());
+  auto input = decoder_.input();
+  nn::Index target_row = 0;
+  for (size_t b = 0; b < counts.targets.size(); ++b) {
+    const int m = counts.targets[b];
+    if (a.d_context > 0) {
+      input.block(target_row, a.width, m, a.d_context).rowwise() = contexts.row(b);
+    }
+    target_row += m;
+  }
+  input.rightCols(a.d_x) = target_x;
+  representation_.resize(static_cast<nn::Index>(counts.observations.size()), a.width);
+  d_output_.resize(target_x.rows(), 2 * a.d_y);
+  d_encoded_.resize(observations.rows(), a.width);
+}
+
+template <class S>
+S Cnmp<S>::train_step_part(nn::ConstMatRef<S> target_y, const CnmpBatchCounts& counts,
+                           const nn::Team& team) {
+  const auto& a = architecture_;
+  encoder_.forward_part(team);
+  // The column sums over observations and targets run on member 0 alone, as whole-width Eigen
+  // expressions on the buffers train_step uses: Eigen's summation order depends on where a block
+  // starts in memory, so cutting them would change the last bits.
+  if (team.member == 0) {
+    const auto encoded = encoder_.output();
+    auto r = representation_.view();
+    auto input = decoder_.input();
+    nn::Index obs_row = 0, target_row = 0;
+    for (size_t b = 0; b < counts.observations.size(); ++b) {
+      const int n = counts.observations[b], m = counts.targets[b];
+      r.row(b) = encoded.middleRows(obs_row, n).colwise().sum() / static_cast<S>(n);
+      input.block(target_row, 0, m, a.width).rowwise() = r.row(b);
+      obs_row += n;
+      target_row += m;
+    }
+  }
+  team.sync();
+  decoder_.forward_part(team);
+  if (team.member == 0) {
+    const auto output = decoder_.output();
+    auto d_output = d_output_.view();
+    shared_loss_ = loss_.value_and_grad(output.leftCols(a.d_y), output.rightCols(a.d_y), target_y,
+                                        d_output.leftCols(a.d_y), d_output.rightCols(a.d_y));
+  }
+  team.sync();
+  const auto d_input = decoder_.backward_part(d_output_.view(), true, team);
+  if (team.member == 0) {
+    auto d_encoded = d_encoded_.view();
+    nn::Index obs_row = 0, target_row = 0;
+    for (size_t b = 0; b < counts.observations.size(); ++b) {
+      const int n = counts.observations[b], m = counts.targets[b];
+      d_encoded.middleRows(obs_row, n).rowwise() =
+          d_input.block(target_row, 0, m, a.width).colwise().sum() / static_cast<S>(n);
+      obs_row += n;
+      target_row += m;
+    }
+  }
+  team.sync();
+  encoder_.backward_part(d_encoded_.view(), false, team);
+  return shared_loss_;
+}
+
+template <class S>
 void Cnmp<S>::predict(nn::ConstMatRef<S> observations, nn::ConstMatRef<S> context,
                       nn::ConstMatRef<S> query_x, Mat& mean, Mat& std) {
   const auto& a = architecture_;

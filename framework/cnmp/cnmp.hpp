@@ -45,6 +45,14 @@ class Cnmp {
                nn::ConstMatRef<S> target_x, nn::ConstMatRef<S> target_y,
                const CnmpBatchCounts& counts);
 
+  // train_step cut among the members of a team of threads (nn/team.hpp), with the same loss and
+  // gradients: prepare_step on one thread, then train_step_part on every member, which returns
+  // the loss once all members have finished. The arguments must stay unchanged in between.
+  void prepare_step(nn::ConstMatRef<S> observations, nn::ConstMatRef<S> contexts,
+                    nn::ConstMatRef<S> target_x, const CnmpBatchCounts& counts);
+  S train_step_part(nn::ConstMatRef<S> target_y, const CnmpBatchCounts& counts,
+                    const nn::Team& team);
+
   // Prediction for one task: conditions on `observations` (n x (d_x + d_y)) and
   // `context` (1 x d_context), queries `query_x` (T x d_x); writes T x d_y.
   void predict(nn::ConstMatRef<S> observations, nn::ConstMatRef<S> context,
@@ -75,6 +83,7 @@ class Cnmp {
   nn::Buffer<S> d_output_;        // targets x 2 d_y
   nn::Buffer<S> d_encoded_;       // observations x width
   std::vector<int> predict_counts_{0};
+  S shared_loss_ = S(0);  // train_step_part's loss, written by member 0
 };
 
 extern template class Cnmp<float>;

@@ -6,13 +6,14 @@
 
 #include <chrono>
 #include <cmath>
+#include <memory>
 #include <numeric>
 #include <stdexcept>
 
-#include "cnmp/batch_sampler.hpp"
+#include "cnmp/parallel_cnmp_step.hpp"
 #include "core/interrupt.hpp"
 #include "core/progress.hpp"
-#include "nn/adam.hpp"
+#include "core/thread_budget.hpp"
 
 namespace corrmp {
 
@@ -73,6 +74,29 @@ Eigen::MatrixXd stack_rows(const std::vector<CnmpTrajectory>& data, bool context
   return out;
 }
 
+// prediction_error on the threads the training's updates use: the trajectories are shared among
+// two workers, the second predicting with `copy` (made on first use, then given the model's
+// current weights). Each error is computed from the same weights by the same code whichever
+// worker has it, and they are added up in trajectory order, so the result is prediction_error's.
+TrajectoryError validation_error(CnmpModel& model, std::unique_ptr<CnmpModel>& copy,
+                                 const std::vector<CnmpTrajectory>& data, int workers) {
+  if (workers < 2) return prediction_error(model, data);
+  if (!copy) copy = std::make_unique<CnmpModel>(model);
+  const auto source = model.network().parameters(), target = copy->network().parameters();
+  for (size_t k = 0; k < source.size(); ++k) target[k].values() = source[k].values();
+  std::vector<double> errors(data.size());
+  parallel_for_with_workers(static_cast<int>(data.size()), 2, [&](int index, int worker) {
+    CnmpModel& predictor = worker == 0 ? model : *copy;
+    const CnmpTrajectory& t = data[static_cast<size_t>(index)];
+    const CnmpPrediction prediction =
+        predictor.predict(first_observation(t.x, t.y), t.context, t.x);
+    errors[static_cast<size_t>(index)] = mean_row_distance(prediction.mean, t.y);
+  });
+  TrajectoryErrorAccumulator accumulator;
+  for (double error : errors) accumulator.add(error);
+  return accumulator.result();
+}
+
 }  // namespace
 
 double scheduled_learning_rate(const CnmpTrainingParams& params, int64_t update) {
@@ -114,7 +138,9 @@ TrainingReport train_cnmp(CnmpModel& model, const std::vector<CnmpTrajectory>& t
   const auto data = normalise(model, train);
   BatchSampler sampler(data, a, params);
   const auto parameters = model.network().parameters();
-  nn::Adam<float> adam(parameters, nn::AdamOptions{params.learning_rate});
+  // Two workers at most: the layers of the paper's widths are too narrow to share among more.
+  ParallelCnmpStep updater(model.network(), params.learning_rate, parallel_workers(2));
+  std::unique_ptr<CnmpModel> validator;  // predicts beside the model when there are two workers
 
   TrainingReport report;
   std::vector<Eigen::VectorXf> best;
@@ -125,16 +151,16 @@ TrainingReport train_cnmp(CnmpModel& model, const std::vector<CnmpTrajectory>& t
   Progress progress(label, params.updates);
   std::string status;
   for (int64_t update = 1; update <= params.updates; ++update) {
-    if ((update - 1) % 100 == 0) adam.set_learning_rate(scheduled_learning_rate(params, update));
+    if ((update - 1) % 100 == 0) {
+      updater.set_learning_rate(scheduled_learning_rate(params, update));
+    }
     if (update % 1000 == 0) check_interrupt();  // validations may be far apart
     sampler.draw(rng);
-    adam.zero_grad();
-    const float loss = sampler.step(model.network());
+    const float loss = updater.step(sampler);
     if (!std::isfinite(loss)) {
       throw std::runtime_error(
           fmt::format("{}: the training loss became {} at update {}", label, loss, update));
     }
-    adam.step();
     loss_sum += loss;
     ++loss_count;
     if (update % params.validate_every == 0 || update == params.updates) {
@@ -145,7 +171,8 @@ TrainingReport train_cnmp(CnmpModel& model, const std::vector<CnmpTrajectory>& t
       status = fmt::format("loss {:.3f}", report.final_loss);
       TrainingCurvePoint point{update, report.final_loss, std::nan(""), std::nan("")};
       if (!validation.empty()) {
-        const TrajectoryError error = prediction_error(model, validation);
+        const TrajectoryError error =
+            validation_error(model, validator, validation, updater.workers());
         point.validation_mean = error.mean;
         point.validation_max = error.max;
         status += fmt::format(", validation error {:.4g} (max {:.4g})", error.mean, error.max);

@@ -10,6 +10,7 @@
 // allocate; it must not be called from two threads at once, nor from inside a task.
 #pragma once
 
+#include <atomic>
 #include <condition_variable>
 #include <cstdint>
 #include <exception>
@@ -48,8 +49,8 @@ class WorkerPool {
   std::mutex mutex_;
   std::condition_variable start_;
   std::condition_variable done_;
-  std::uint64_t generation_ = 0;
-  int pending_ = 0;
+  std::atomic<std::uint64_t> generation_{0};  // written under mutex_, polled without it
+  std::atomic<int> pending_{0};
   bool stopping_ = false;
   void* context_ = nullptr;
   Call call_ = nullptr;

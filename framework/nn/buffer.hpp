@@ -6,6 +6,8 @@
 // e.g. a CNMP conditioned on a varying number of observations) reuse the same memory.
 #pragma once
 
+#include <cassert>
+
 #include "nn/tensor.hpp"
 
 namespace corrmp::nn {
@@ -21,6 +23,13 @@ class Buffer {
     rows_ = rows;
     cols_ = cols;
     return view();
+  }
+
+  /// A rows x cols view of the storage that leaves the buffer's shape as it is, for threads
+  /// that share a buffer (nn/team.hpp): the storage must already hold rows * cols elements.
+  MatMap<S> shaped(Index rows, Index cols) {
+    assert(rows * cols <= storage_.size());
+    return MatMap<S>(storage_.data(), rows, cols);
   }
 
   /// The current shape as a writable view.

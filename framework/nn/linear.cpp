@@ -35,8 +35,16 @@ template <class S>
 void Linear<S>::forward(ConstMatRef<S> x, MatRef<S> y) const {
   check_shape("Linear::forward", "x", x, x.rows(), in_features());
   check_shape("Linear::forward", "y", y, x.rows(), out_features());
-  gemm<S>(x, Op::kPlain, weight_, Op::kTransposed, y, false, scratch<S>());
-  y.rowwise() += bias_;
+  forward_part(x, y, 0, out_features());
+}
+
+template <class S>
+void Linear<S>::forward_part(ConstMatRef<S> x, MatRef<S> y, Index first, Index count) const {
+  if (count == 0) return;
+  auto part = y.middleCols(first, count);
+  gemm<S>(x, Op::kPlain, weight_.middleRows(first, count), Op::kTransposed, part, false,
+          scratch<S>());
+  part.rowwise() += bias_.segment(first, count);
 }
 
 template <class S>
@@ -44,6 +52,18 @@ void Linear<S>::accumulate_param_grad(ConstMatRef<S> x, ConstMatRef<S> dy) {
   check_shape("Linear::backward", "x", x, x.rows(), in_features());
   check_shape("Linear::backward", "dy", dy, x.rows(), out_features());
   gemm<S>(dy, Op::kTransposed, x, Op::kPlain, weight_grad_, true, scratch<S>());
+  accumulate_bias_grad(dy);
+}
+
+template <class S>
+void Linear<S>::weight_grad_part(ConstMatRef<S> x, ConstMatRef<S> dy, Index first, Index count) {
+  if (count == 0) return;
+  auto part = weight_grad_.middleRows(first, count);
+  gemm<S>(dy.middleCols(first, count), Op::kTransposed, x, Op::kPlain, part, true, scratch<S>());
+}
+
+template <class S>
+void Linear<S>::accumulate_bias_grad(ConstMatRef<S> dy) {
   bias_grad_.noalias() += dy.colwise().sum();
 }
 
@@ -51,7 +71,14 @@ template <class S>
 void Linear<S>::input_grad(ConstMatRef<S> dy, MatRef<S> dx) const {
   check_shape("Linear::backward", "dy", dy, dy.rows(), out_features());
   check_shape("Linear::backward", "dx", dx, dy.rows(), in_features());
-  gemm<S>(dy, Op::kPlain, weight_, Op::kPlain, dx, false, scratch<S>());
+  input_grad_part(dy, dx, 0, in_features());
+}
+
+template <class S>
+void Linear<S>::input_grad_part(ConstMatRef<S> dy, MatRef<S> dx, Index first, Index count) const {
+  if (count == 0) return;
+  auto part = dx.middleCols(first, count);
+  gemm<S>(dy, Op::kPlain, weight_.middleCols(first, count), Op::kPlain, part, false, scratch<S>());
 }
 
 template <class S>

@@ -38,6 +38,17 @@ class Linear {
   /// Writes dx = dy W only.
   void input_grad(ConstMatRef<S> dy, MatRef<S> dx) const;
 
+  /// The same work cut among threads (nn/team.hpp), each entry computed exactly as the whole
+  /// call computes it: forward_part writes columns [first, first + count) of y,
+  /// weight_grad_part accumulates those rows of dL/dW (outputs first.. of the layer) and
+  /// input_grad_part writes columns [first, first + count) of dx (inputs first..).
+  /// accumulate_bias_grad adds dL/db, on one thread: Eigen's column sums take an order that
+  /// depends on where a block starts in memory, so they are not cut.
+  void forward_part(ConstMatRef<S> x, MatRef<S> y, Index first, Index count) const;
+  void weight_grad_part(ConstMatRef<S> x, ConstMatRef<S> dy, Index first, Index count);
+  void accumulate_bias_grad(ConstMatRef<S> dy);
+  void input_grad_part(ConstMatRef<S> dy, MatRef<S> dx, Index first, Index count) const;
+
   /// {prefix + "weight" [out, in], prefix + "bias" [out]}.
   std::vector<Parameter<S>> parameters(const std::string& prefix = "");
 

@@ -1,11 +1,13 @@
 // Multi-layer perceptron (formulas in nn/mlp.hpp).
 #include "nn/mlp.hpp"
 
+#include <algorithm>
 #include <stdexcept>
 #include <utility>
 
 #include "nn/activation.hpp"
 #include "nn/check.hpp"
+#include "nn/relu_fusion.hpp"
 
 namespace corrmp::nn {
 
@@ -66,6 +68,57 @@ ConstMatMap<S> Mlp<S>::backward(ConstMatRef<S> dy) {
 template <class S>
 void Mlp<S>::backward_params_only(ConstMatRef<S> dy) {
   run_backward(dy, false);
+}
+
+template <class S>
+void Mlp<S>::prepare(Index rows) {
+  input_.resize(rows, input_size());
+  Index widest = input_size();
+  for (std::size_t i = 0; i < layers_.size(); ++i) {
+    outputs_[i].resize(rows, sizes_[i + 1]);
+    widest = std::max(widest, sizes_[i + 1]);
+  }
+  for (Buffer<S>& g : grads_) g.resize(rows, widest);
+}
+
+template <class S>
+void Mlp<S>::forward_part(const Team& team) {
+  for (std::size_t i = 0; i < layers_.size(); ++i) {
+    MatMap<S> out = outputs_[i].view();
+    const auto [first, count] = team.share(sizes_[i + 1]);
+    layers_[i].forward_part(layer_input(i), out, first, count);
+    if (i + 1 < layers_.size() && count > 0) relu_in_place(out.middleCols(first, count));
+    team.sync();
+  }
+}
+
+template <class S>
+ConstMatMap<S> Mlp<S>::backward_part(ConstMatRef<S> dy, bool input_grad, const Team& team) {
+  const Index rows = input_.rows();
+  check_shape("Mlp::backward_part", "dy", dy, rows, output_size());
+  int current = -1;  // grads_[current] holds g_i (dy for the last layer)
+  for (std::size_t i = layers_.size(); i-- > 0;) {
+    const ConstMatRef<S> g_i =
+        current < 0 ? dy : ConstMatRef<S>(grads_[current].shaped(rows, sizes_[i + 1]));
+    const auto [first, count] = team.share(sizes_[i + 1]);
+    layers_[i].weight_grad_part(layer_input(i), g_i, first, count);
+    if (team.member == 0) layers_[i].accumulate_bias_grad(g_i);
+    if (input_grad || i > 0) {
+      const int next = current < 0 ? 0 : 1 - current;
+      MatMap<S> dx = grads_[next].shaped(rows, sizes_[i]);
+      const auto [in_first, in_count] = team.share(sizes_[i]);
+      layers_[i].input_grad_part(g_i, dx, in_first, in_count);
+      if (i > 0 && in_count > 0) {
+        const auto a = outputs_[i - 1].view().middleCols(in_first, in_count);
+        auto part = dx.middleCols(in_first, in_count);
+        part = (a.array() > S(0)).select(part.array(), S(0)).matrix();
+      }
+      current = next;
+    }
+    team.sync();
+  }
+  if (!input_grad) return ConstMatMap<S>(nullptr, 0, 0);
+  return ConstMatMap<S>(grads_[current].shaped(rows, input_size()).data(), rows, input_size());
 }
 
 template <class S>

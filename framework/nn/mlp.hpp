@@ -20,6 +20,7 @@
 #include "nn/linear.hpp"
 #include "nn/parameter.hpp"
 #include "nn/rng.hpp"
+#include "nn/team.hpp"
 #include "nn/tensor.hpp"
 
 namespace corrmp::nn {
@@ -39,6 +40,17 @@ class Mlp {
   void backward_params_only(ConstMatRef<S> dy);
   /// The output of the last forward.
   ConstMatMap<S> output() const { return outputs_.back().view(); }
+
+  /// forward and backward cut among the members of a team of threads (nn/team.hpp), with the
+  /// same results: prepare(rows) shapes the buffers for a batch of `rows` on one thread, input()
+  /// is then filled, and every member calls forward_part, then backward_part, which return once
+  /// all members have finished (each member computes its share of every layer's output columns,
+  /// parameter-gradient rows and input-gradient columns).
+  void prepare(Index rows);
+  MatMap<S> input() { return input_.view(); }
+  void forward_part(const Team& team);
+  /// Returns dL/dx when input_grad, else an empty view.
+  ConstMatMap<S> backward_part(ConstMatRef<S> dy, bool input_grad, const Team& team);
 
   /// prefix + "layers.<i>.weight" / "layers.<i>.bias" for every layer i.
   std::vector<Parameter<S>> parameters(const std::string& prefix = "");

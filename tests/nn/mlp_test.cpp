@@ -5,7 +5,10 @@
 
 #include <gtest/gtest.h>
 
+#include <cmath>
+#include <cstring>
 #include <stdexcept>
+#include <thread>
 
 #include "gradient_check.hpp"
 #include "nn/activation.hpp"
@@ -101,6 +104,45 @@ TEST(Mlp, RejectsBadSizesAndShapes) {
   EXPECT_THROW(mlp.forward(MatD(2, 4)), std::invalid_argument);
   mlp.forward(MatD::Zero(2, 3));
   EXPECT_THROW(mlp.backward(MatD(3, 2)), std::invalid_argument);
+}
+
+// forward_part and backward_part run by a team of threads give the bits of forward and backward
+// (nn/team.hpp): widths that do not split evenly, and a team larger than a narrow layer.
+TEST(MlpTeam, PartsOnThreadsGiveExactlyTheWholePasses) {
+  for (int members : {2, 3}) {
+    Rng rng(57);
+    Mlp<float> whole({5, 37, 223, 3}, rng);
+    Mlp<float> split = whole;
+    Mat<float> x(11, 5), dy(11, 3);
+    for (Index i = 0; i < x.size(); ++i) x.data()[i] = std::sin(0.7f * static_cast<float>(i));
+    for (Index i = 0; i < dy.size(); ++i) dy.data()[i] = std::cos(0.3f * static_cast<float>(i));
+    const Mat<float> y = whole.forward(x);
+    const Mat<float> dx = whole.backward(dy);
+
+    split.prepare(x.rows());
+    split.input() = x;
+    SpinBarrier barrier(members);
+    Mat<float> split_dx;
+    std::vector<std::thread> threads;
+    const auto member = [&](int index) {
+      const Team team{index, members, &barrier};
+      split.forward_part(team);
+      const auto grad = split.backward_part(dy, true, team);
+      if (index == 0) split_dx = grad;
+    };
+    for (int m = 1; m < members; ++m) threads.emplace_back(member, m);
+    member(0);
+    for (auto& t : threads) t.join();
+
+    EXPECT_EQ(0, std::memcmp(y.data(), split.output().data(), sizeof(float) * y.size()));
+    ASSERT_EQ(split_dx.rows(), dx.rows());
+    EXPECT_EQ(0, std::memcmp(dx.data(), split_dx.data(), sizeof(float) * dx.size()));
+    const auto a = whole.parameters(), b = split.parameters();
+    for (size_t k = 0; k < a.size(); ++k) {
+      EXPECT_EQ(0, std::memcmp(a[k].grad, b[k].grad, sizeof(float) * a[k].size()))
+          << members << " members, " << a[k].name;
+    }
+  }
 }
 
 }  // namespace

@@ -1,0 +1,60 @@
+// One Adam update of a CNMP (paper, Section III-A; training as in cnmp/cnmp_trainer.hpp) on the
+// cores a run has, so that a single large network, such as the monolithic baseline's, does not
+// leave a core idle.
+//
+// With W workers the update runs as a team (nn/team.hpp): each member computes its share of
+// every layer's output columns in the forward pass, of the parameter-gradient rows and
+// input-gradient columns in the backward pass, then updates its share of the parameters by Adam
+// and zeroes their gradients for the next update. Every entry is computed by the same operations
+// as with one worker (the products sum over the same index in the same order, nn/gemm.hpp, and
+// Adam's shares are cut on its range boundaries, nn/adam.hpp), so the results are identical
+// whatever W: the parallel update changes the speed of a run, never its numbers. Cutting the
+// layers rather than the batch keeps each core's share of the weights, gradients and Adam
+// moments at 1/W; each would otherwise stream all of them, which is what bounds an update of
+// this size.
+#pragma once
+
+#include <cstddef>
+#include <vector>
+
+#include "cnmp/batch_sampler.hpp"
+#include "core/worker_pool.hpp"
+#include "nn/adam.hpp"
+#include "nn/team.hpp"
+
+namespace corrmp {
+
+class ParallelCnmpStep {
+ public:
+  // Updates `network` (which must outlive this) by Adam on `workers` >= 1 threads.
+  ParallelCnmpStep(Cnmp<float>& network, double learning_rate, int workers);
+
+  void set_learning_rate(double learning_rate) { adam_.set_learning_rate(learning_rate); }
+
+  // One update on the batch `sampler` drew last; returns the batch's loss. When the loss is not
+  // finite the weights are left unchanged (the training stops there).
+  float step(const BatchSampler& sampler);
+
+  int workers() const { return pool_.size(); }
+
+ private:
+  // Adds Adam's update to blocks [first, last) of the parameters (its step begun) and zeroes
+  // their gradients.
+  void update(size_t first, size_t last);
+
+  // Entries [begin, end) of parameter k, on Adam's range boundaries.
+  struct UpdateBlock {
+    size_t parameter;
+    nn::Index begin;
+    nn::Index end;
+  };
+
+  Cnmp<float>& network_;
+  std::vector<nn::Parameter<float>> params_;
+  nn::Adam<float> adam_;
+  WorkerPool pool_;
+  nn::SpinBarrier barrier_;
+  std::vector<UpdateBlock> blocks_;  // every parameter entry, in parameter order
+};
+
+}  // namespace corrmp
