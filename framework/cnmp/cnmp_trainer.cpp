@@ -97,6 +97,9 @@ TrajectoryError validation_error(CnmpModel& model, std::unique_ptr<CnmpModel>& c
   return accumulator.result();
 }
 
+// The size from which a network's updates run on two workers (see train_cnmp).
+constexpr int64_t kTeamParameters = 150000;
+
 }  // namespace
 
 double scheduled_learning_rate(const CnmpTrainingParams& params, int64_t update) {
@@ -138,8 +141,12 @@ TrainingReport train_cnmp(CnmpModel& model, const std::vector<CnmpTrajectory>& t
   const auto data = normalise(model, train);
   BatchSampler sampler(data, a, params);
   const auto parameters = model.network().parameters();
-  // Two workers at most: the layers of the paper's widths are too narrow to share among more.
-  ParallelCnmpStep updater(model.network(), params.learning_rate, parallel_workers(2));
+  // Two workers at most, and only for wide networks such as the monolithic baselines': the
+  // layers are shared column by column with a barrier after each, and at the segment networks'
+  // width of 128 the second core gained 1.0-1.3x on the Zen 4 development machine (bench_cnmp
+  // BM_update_parallel), at 223 about 1.6x.
+  const int workers = model.network().parameter_count() >= kTeamParameters ? 2 : 1;
+  ParallelCnmpStep updater(model.network(), params.learning_rate, parallel_workers(workers));
   std::unique_ptr<CnmpModel> validator;  // predicts beside the model when there are two workers
 
   TrainingReport report;

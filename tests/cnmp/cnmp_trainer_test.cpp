@@ -5,6 +5,7 @@
 #include <gtest/gtest.h>
 
 #include "cnmp/curve_family.hpp"
+#include "core/thread_budget.hpp"
 
 namespace corrmp {
 namespace {
@@ -84,6 +85,40 @@ TEST(CnmpTrainer, SameSeedGivesIdenticalWeights) {
   CnmpModel other(curve_architecture(), 10);
   EXPECT_NE(other.network().parameters().front().values()(0),
             CnmpModel(curve_architecture(), 9).network().parameters().front().values()(0));
+}
+
+// A network as wide as the monolithic baseline's trains its updates and validations on two
+// workers when the thread budget allows (cnmp/parallel_cnmp_step.hpp): the same weights, curve
+// and best checkpoint as on one.
+TEST(CnmpTrainer, AWideNetworkTrainsIdenticallyOnOneAndTwoThreads) {
+  const Fixture data;
+  CnmpArchitecture a = curve_architecture();
+  a.width = 223;
+  CnmpTrainingParams p = quick_training();
+  p.updates = 120;
+  p.validate_every = 40;
+  const int saved = thread_budget();
+  std::vector<std::vector<Eigen::VectorXf>> weights;
+  std::vector<TrainingReport> reports;
+  for (int threads : {1, 2}) {
+    set_thread_budget(threads);
+    CnmpModel model(a, 1);
+    ASSERT_GE(model.network().parameter_count(), 200000);
+    Rng rng(4);
+    reports.push_back(train_cnmp(model, data.train, data.validation, p, rng, "wide"));
+    weights.emplace_back();
+    for (const auto& param : model.network().parameters()) weights.back().push_back(param.values());
+  }
+  set_thread_budget(saved);
+  EXPECT_EQ(reports[0].best_update, reports[1].best_update);
+  ASSERT_EQ(reports[0].curve.size(), reports[1].curve.size());
+  for (size_t i = 0; i < reports[0].curve.size(); ++i) {
+    EXPECT_EQ(reports[0].curve[i].loss, reports[1].curve[i].loss);
+    EXPECT_EQ(reports[0].curve[i].validation_mean, reports[1].curve[i].validation_mean);
+    EXPECT_EQ(reports[0].curve[i].validation_max, reports[1].curve[i].validation_max);
+  }
+  for (size_t k = 0; k < weights[0].size(); ++k)
+    EXPECT_TRUE((weights[0][k].array() == weights[1][k].array()).all()) << "parameter " << k;
 }
 
 TEST(CnmpTrainer, RejectsTrajectoriesOfTheWrongShape) {
