@@ -14,6 +14,7 @@
 #include "core/interrupt.hpp"
 #include "core/progress.hpp"
 #include "core/thread_budget.hpp"
+#include "nn/gemm.hpp"
 
 namespace corrmp {
 
@@ -145,7 +146,8 @@ TrainingReport train_cnmp(CnmpModel& model, const std::vector<CnmpTrajectory>& t
   // layers are shared column by column with a barrier after each, and at the segment networks'
   // width of 128 the second core gained 1.0-1.3x on the Zen 4 development machine (bench_cnmp
   // BM_update_parallel), at 223 about 1.6x.
-  const int workers = model.network().parameter_count() >= kTeamParameters ? 2 : 1;
+  const int workers =
+      model.network().parameter_count() >= kTeamParameters && nn::gemm_float_split_exact() ? 2 : 1;
   ParallelCnmpStep updater(model.network(), params.learning_rate, parallel_workers(workers));
   std::unique_ptr<CnmpModel> validator;  // predicts beside the model when there are two workers
 

@@ -40,17 +40,31 @@ float ParallelCnmpStep::step(const BatchSampler& sampler) {
   if (adam_.step_count() == 0) adam_.zero_grad();
   network_.prepare_step(sampler.observations(), sampler.contexts(), sampler.target_x(),
                         sampler.counts());
-  adam_.begin_step();  // the factors of this update: learning rate and step count
   const size_t blocks = blocks_.size(), members = static_cast<size_t>(pool_.size());
   float loss = 0.0f;
+  barrier_.reset();
   pool_.run([&](int member) {
     const nn::Team team{member, pool_.size(), &barrier_};
-    // Returns once every member has finished the backward pass: all gradients are complete.
-    const float batch_loss = network_.train_step_part(sampler.target_y(), sampler.counts(), team);
-    if (member == 0) loss = batch_loss;
-    if (!std::isfinite(batch_loss)) return;
-    const size_t index = static_cast<size_t>(member);
-    update(index * blocks / members, (index + 1) * blocks / members);
+    try {
+      // Returns once every member has finished the backward pass: all gradients are complete.
+      const float batch_loss = network_.train_step_part(sampler.target_y(), sampler.counts(), team);
+      if (!std::isfinite(batch_loss)) {
+        if (member == 0) loss = batch_loss;
+        return;
+      }
+      if (member == 0) {
+        loss = batch_loss;
+        adam_.begin_step();
+      }
+      team.sync();
+      const size_t index = static_cast<size_t>(member);
+      update(index * blocks / members, (index + 1) * blocks / members);
+    } catch (const nn::TeamAborted&) {
+      return;  // another member failed: its error is the one run() rethrows
+    } catch (...) {
+      barrier_.abort();  // the others would wait for this member forever
+      throw;
+    }
   });
   if (!std::isfinite(loss)) adam_.zero_grad();
   return loss;

@@ -32,7 +32,10 @@ class ParallelCnmpStep {
   void set_learning_rate(double learning_rate) { adam_.set_learning_rate(learning_rate); }
 
   // One update on the batch `sampler` drew last; returns the batch's loss. When the loss is not
-  // finite the weights are left unchanged (the training stops there).
+  // finite the weights, gradients and Adam's state are left unchanged. With two workers or more
+  // the network's gradients must be zero when step() is called (each update zeroes them after
+  // use, in the same pass as Adam): nothing else may accumulate gradients into the network
+  // between updates.
   float step(const BatchSampler& sampler);
 
   int workers() const { return pool_.size(); }
@@ -42,7 +45,7 @@ class ParallelCnmpStep {
   // their gradients.
   void update(size_t first, size_t last);
 
-  // Entries [begin, end) of parameter k, on Adam's range boundaries.
+  // Entries [begin, end) of one parameter, on Adam's range boundaries.
   struct UpdateBlock {
     size_t parameter;
     nn::Index begin;

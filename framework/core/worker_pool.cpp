@@ -11,7 +11,7 @@ namespace corrmp {
 
 namespace {
 
-// Polls `done` for a while (about a tenth of a millisecond) before the caller sleeps: the steps of
+// Polls `done` for 4096 pauses (tens of microseconds) before the caller sleeps: the steps of
 // a training loop follow one another within microseconds, much faster than a sleeping thread
 // wakes up, while a thread that finds nothing to do soon sleeps and leaves its core.
 template <class Done>

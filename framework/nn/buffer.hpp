@@ -6,7 +6,7 @@
 // e.g. a CNMP conditioned on a varying number of observations) reuse the same memory.
 #pragma once
 
-#include <cassert>
+#include <stdexcept>
 
 #include "nn/tensor.hpp"
 
@@ -28,7 +28,8 @@ class Buffer {
   /// A rows x cols view of the storage that leaves the buffer's shape as it is, for threads
   /// that share a buffer (nn/team.hpp): the storage must already hold rows * cols elements.
   MatMap<S> shaped(Index rows, Index cols) {
-    assert(rows * cols <= storage_.size());
+    if (rows * cols > storage_.size())
+      throw std::logic_error("Buffer::shaped: larger than storage");
     return MatMap<S>(storage_.data(), rows, cols);
   }
 

@@ -248,6 +248,8 @@ void gemm(ConstMatRef<S> a, Op op_a, ConstMatRef<S> b, Op op_b, MatRef<S> c, boo
   eigen_gemm<S>(a, op_a, b, op_b, c, accumulate);
 }
 
+bool gemm_float_split_exact() { return CORRMP_GEMM_AVX512 != 0; }
+
 template void gemm<float>(ConstMatRef<float>, Op, ConstMatRef<float>, Op, MatRef<float>, bool,
                           Buffer<float>&);
 template void gemm<double>(ConstMatRef<double>, Op, ConstMatRef<double>, Op, MatRef<double>, bool,

@@ -47,6 +47,11 @@ template <class S>
 void gemm(ConstMatRef<S> a, Op op_a, ConstMatRef<S> b, Op op_b, MatRef<S> c, bool accumulate,
           Buffer<S>& scratch);
 
+/// True when float products run on the kernel above, whose every entry of C is the same whatever
+/// block of C a call computes (so work cut among threads keeps its bits, nn/team.hpp); Eigen's
+/// products, used otherwise, group their sums by block position.
+bool gemm_float_split_exact();
+
 extern template void gemm<float>(ConstMatRef<float>, Op, ConstMatRef<float>, Op, MatRef<float>,
                                  bool, Buffer<float>&);
 extern template void gemm<double>(ConstMatRef<double>, Op, ConstMatRef<double>, Op, MatRef<double>,

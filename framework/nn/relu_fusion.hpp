@@ -1,6 +1,7 @@
 // The ReLU of the autoencoder (paper, Section "Learning the Context": every convolution but the
 // last is followed by a ReLU) applied inside the convolution layers, on data a layer has just
-// written and still holds in cache, instead of in a separate pass over the batch
+// written and still holds in cache, instead of in a separate pass over the batch (and by the
+// Mlp's threads on their own columns, nn/mlp.hpp)
 // (nn/activation.hpp's Relu, whose formulas these repeat):
 //   forward:  y = max(y, 0)
 //   backward: with x = relu(a) the layer's input, dL/da = dL/dx [x > 0]

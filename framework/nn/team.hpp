@@ -7,6 +7,7 @@
 #pragma once
 
 #include <atomic>
+#include <stdexcept>
 #include <thread>
 #include <utility>
 
@@ -18,11 +19,17 @@
 
 namespace corrmp::nn {
 
+/// Thrown by SpinBarrier::wait once a member has aborted the team.
+struct TeamAborted : std::runtime_error {
+  TeamAborted() : std::runtime_error("a thread of the team failed") {}
+};
+
 class SpinBarrier {
  public:
   explicit SpinBarrier(int count) : count_(count) {}
 
-  /// Returns once all `count` threads have called wait() for this round.
+  /// Returns once all `count` threads have called wait() for this round; throws TeamAborted
+  /// once abort() was called.
   void wait() {
     const unsigned round = round_.load(std::memory_order_acquire);
     if (arrived_.fetch_add(1, std::memory_order_acq_rel) + 1 == count_) {
@@ -31,12 +38,22 @@ class SpinBarrier {
       return;
     }
     for (int spins = 0; round_.load(std::memory_order_acquire) == round; ++spins) {
+      if (aborted_.load(std::memory_order_acquire)) throw TeamAborted();
       if (spins < kSpinsBeforeYield) {
         pause();
       } else {
         std::this_thread::yield();
       }
     }
+  }
+
+  /// Releases the threads waiting now or later with TeamAborted: a member that fails calls it,
+  /// so that the others do not wait for it forever.
+  void abort() { aborted_.store(true, std::memory_order_release); }
+  /// Makes an aborted barrier usable again; only while no thread waits on it.
+  void reset() {
+    aborted_.store(false, std::memory_order_relaxed);
+    arrived_.store(0, std::memory_order_relaxed);
   }
 
  private:
@@ -50,6 +67,7 @@ class SpinBarrier {
   const int count_;
   std::atomic<int> arrived_{0};
   std::atomic<unsigned> round_{0};
+  std::atomic<bool> aborted_{false};
 };
 
 struct Team {
@@ -65,6 +83,7 @@ struct Team {
   /// This member's part [first, first + count) of n entries: contiguous parts in member order,
   /// cut at multiples of `align` (the matrix kernel's vector width, nn/gemm.hpp) where possible.
   std::pair<Index, Index> share(Index n, Index align = 16) const {
+    if (align < 1) align = 1;
     const auto cut = [&](int m) -> Index {
       if (m >= size) return n;
       const Index even = n * m / size;
