@@ -2,17 +2,21 @@
 #include "cnmp/parallel_cnmp_step.hpp"
 
 #include <algorithm>
+#include <chrono>
 #include <cmath>
 #include <stdexcept>
 
 namespace corrmp {
 
-ParallelCnmpStep::ParallelCnmpStep(Cnmp<float>& network, double learning_rate, int workers)
+ParallelCnmpStep::ParallelCnmpStep(Cnmp<float>& network, double learning_rate, int workers,
+                                   int64_t probe_every, int64_t probe_updates)
     : network_(network),
       params_(network.parameters()),
       adam_(params_, nn::AdamOptions{learning_rate}),
       pool_(std::max(workers, 1)),
-      barrier_(std::max(workers, 1)) {
+      barrier_(std::max(workers, 1)),
+      probe_every_(std::max<int64_t>(probe_every, 1)),
+      probe_updates_(std::max<int64_t>(probe_updates, 0)) {
   constexpr nn::Index kBlock = nn::Adam<float>::kRangeAlignment;
   for (size_t k = 0; k < params_.size(); ++k)
     for (nn::Index begin = 0; begin < params_[k].size(); begin += kBlock)
@@ -29,15 +33,32 @@ void ParallelCnmpStep::update(size_t first, size_t last) {
 }
 
 float ParallelCnmpStep::step(const BatchSampler& sampler) {
-  if (pool_.size() == 1) {  // the plain update
-    adam_.zero_grad();
-    const float loss = sampler.step(network_);
-    if (std::isfinite(loss)) adam_.step();
-    return loss;
-  }
-  // The gradients are zero here: from the constructor's network (zeroed below on first use) or
-  // from the previous update, which zeroed them after using them.
-  if (adam_.step_count() == 0) adam_.zero_grad();
+  if (pool_.size() == 1) return step_alone(sampler);
+  const int64_t phase = updates_++ % probe_every_;
+  if (phase == 0) team_seconds_ = alone_seconds_ = 0.0;
+  if (phase >= 2 * probe_updates_)
+    return team_faster_ ? step_as_team(sampler) : step_alone(sampler);
+  const bool team = phase < probe_updates_;
+  const auto start = std::chrono::steady_clock::now();
+  const float loss = team ? step_as_team(sampler) : step_alone(sampler);
+  (team ? team_seconds_ : alone_seconds_) +=
+      std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+  if (phase + 1 == 2 * probe_updates_) team_faster_ = team_seconds_ <= alone_seconds_;
+  return loss;
+}
+
+float ParallelCnmpStep::step_alone(const BatchSampler& sampler) {
+  adam_.zero_grad();
+  const float loss = sampler.step(network_);
+  if (std::isfinite(loss)) adam_.step();
+  gradients_zero_ = false;
+  return loss;
+}
+
+float ParallelCnmpStep::step_as_team(const BatchSampler& sampler) {
+  if (!gradients_zero_) adam_.zero_grad();
+  gradients_zero_ = false;  // until the update below has zeroed them again
+  ++team_updates_;
   network_.prepare_step(sampler.observations(), sampler.contexts(), sampler.target_x(),
                         sampler.counts());
   const size_t blocks = blocks_.size(), members = static_cast<size_t>(pool_.size());
@@ -67,6 +88,7 @@ float ParallelCnmpStep::step(const BatchSampler& sampler) {
     }
   });
   if (!std::isfinite(loss)) adam_.zero_grad();
+  gradients_zero_ = true;
   return loss;
 }
 

@@ -12,9 +12,16 @@
 // layers rather than the batch keeps each core's share of the weights, gradients and Adam
 // moments at 1/W; each would otherwise stream all of them, which is what bounds an update of
 // this size.
+//
+// Which is faster, the team or one thread alone, depends on the machine's load: on a shared
+// host the second core can be slowed or taken away for seconds, and the team then runs slower
+// than one thread. Both give the same bits, so the update times them in turn: of every
+// `probe_every` updates, the first `probe_updates` run on the team, the next `probe_updates` on
+// one thread, and the faster runs the rest.
 #pragma once
 
 #include <cstddef>
+#include <cstdint>
 #include <vector>
 
 #include "cnmp/batch_sampler.hpp"
@@ -27,7 +34,8 @@ namespace corrmp {
 class ParallelCnmpStep {
  public:
   // Updates `network` (which must outlive this) by Adam on `workers` >= 1 threads.
-  ParallelCnmpStep(Cnmp<float>& network, double learning_rate, int workers);
+  ParallelCnmpStep(Cnmp<float>& network, double learning_rate, int workers,
+                   int64_t probe_every = 4000, int64_t probe_updates = 100);
 
   void set_learning_rate(double learning_rate) { adam_.set_learning_rate(learning_rate); }
 
@@ -39,8 +47,14 @@ class ParallelCnmpStep {
   float step(const BatchSampler& sampler);
 
   int workers() const { return pool_.size(); }
+  // How many updates ran on the team so far.
+  int64_t team_updates() const { return team_updates_; }
 
  private:
+  // The update on one thread: zero the gradients, a forward and backward pass, Adam's step.
+  float step_alone(const BatchSampler& sampler);
+  // The update on the team (the gradients zero on entry and on return).
+  float step_as_team(const BatchSampler& sampler);
   // Adds Adam's update to blocks [first, last) of the parameters (its step begun) and zeroes
   // their gradients.
   void update(size_t first, size_t last);
@@ -58,6 +72,12 @@ class ParallelCnmpStep {
   WorkerPool pool_;
   nn::SpinBarrier barrier_;
   std::vector<UpdateBlock> blocks_;  // every parameter entry, in parameter order
+
+  int64_t probe_every_, probe_updates_;
+  int64_t updates_ = 0, team_updates_ = 0;
+  double team_seconds_ = 0.0, alone_seconds_ = 0.0;  // in the current probe
+  bool team_faster_ = true;
+  bool gradients_zero_ = false;  // as the team expects them on entry
 };
 
 }  // namespace corrmp

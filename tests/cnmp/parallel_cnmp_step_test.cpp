@@ -35,7 +35,8 @@ struct Trained {
   std::vector<Eigen::VectorXf> weights;
 };
 
-Trained train(const CnmpArchitecture& a, int workers, int updates) {
+Trained train(const CnmpArchitecture& a, int workers, int updates, int64_t probe_every = 4000,
+              int64_t probe_updates = 100, int64_t* team_updates = nullptr) {
   CnmpModel model(a, 3);
   const auto data = waves(a, 12, 40);
   CnmpTrainingParams params;
@@ -43,7 +44,7 @@ Trained train(const CnmpArchitecture& a, int workers, int updates) {
   params.max_observations = 6;
   params.max_targets = 9;
   BatchSampler sampler(data, a, params);
-  ParallelCnmpStep updater(model.network(), 1e-3, workers);
+  ParallelCnmpStep updater(model.network(), 1e-3, workers, probe_every, probe_updates);
   EXPECT_EQ(updater.workers(), workers);
   Rng rng(11);
   Trained out;
@@ -52,6 +53,7 @@ Trained train(const CnmpArchitecture& a, int workers, int updates) {
     out.losses.push_back(updater.step(sampler));
   }
   for (const auto& p : model.network().parameters()) out.weights.push_back(p.values());
+  if (team_updates) *team_updates = updater.team_updates();
   return out;
 }
 
@@ -100,6 +102,18 @@ TEST(ParallelCnmpStep, UnevenWidthsAndNoContextStayIdentical) {
       expect_identical(one, train(a, workers, 15));
     }
   }
+}
+
+// Timing the team against one thread switches between them (2 of every 7 updates on each, then
+// the faster): the same bits throughout.
+TEST(ParallelCnmpStep, SwitchingBetweenTheTeamAndOneThreadKeepsTheBits) {
+  SKIP_UNLESS_SPLIT_EXACT();
+  const CnmpArchitecture a = architecture(96, 1);
+  const Trained one = train(a, 1, 35);
+  int64_t team_updates = 0;
+  expect_identical(one, train(a, 2, 35, 7, 2, &team_updates));
+  EXPECT_GE(team_updates, 10);  // the team's probes
+  EXPECT_LE(team_updates, 25);  // not the other probes
 }
 
 // A batch whose loss is NaN (one NaN target) leaves the weights as the previous update left
