@@ -32,26 +32,63 @@ Cnmp<S>::Cnmp(const CnmpArchitecture& architecture, nn::Rng& rng)
       loss_(architecture.min_std) {}
 
 template <class S>
+void Cnmp<S>::fill_decoder_input(nn::MatRef<S> input, nn::ConstMatRef<S> contexts,
+                                 nn::ConstMatRef<S> target_x,
+                                 const std::vector<int>& target_counts) const {
+  const auto& a = architecture_;
+  nn::Index target_row = 0;
+  for (size_t b = 0; b < target_counts.size(); ++b) {
+    const int m = target_counts[b];
+    if (a.d_context > 0) {
+      input.block(target_row, a.width, m, a.d_context).rowwise() = contexts.row(b);
+    }
+    target_row += m;
+  }
+  input.rightCols(a.d_x) = target_x;
+}
+
+template <class S>
+void Cnmp<S>::average_encodings(nn::MatRef<S> input, const std::vector<int>& observation_counts,
+                                const std::vector<int>& target_counts) {
+  const auto& a = architecture_;
+  const auto encoded = encoder_.output();
+  auto r = representation_.view();
+  nn::Index obs_row = 0, target_row = 0;
+  for (size_t b = 0; b < observation_counts.size(); ++b) {
+    const int n = observation_counts[b], m = target_counts[b];
+    const auto task = static_cast<nn::Index>(b);
+    r.row(task) = encoded.middleRows(obs_row, n).colwise().sum() / static_cast<S>(n);
+    input.block(target_row, 0, m, a.width).rowwise() = r.row(task);
+    obs_row += n;
+    target_row += m;
+  }
+}
+
+template <class S>
+void Cnmp<S>::spread_representation_grad(nn::ConstMatRef<S> d_input,
+                                         const CnmpBatchCounts& counts) {
+  auto d_encoded = d_encoded_.view();
+  nn::Index obs_row = 0, target_row = 0;
+  for (size_t b = 0; b < counts.observations.size(); ++b) {
+    const int n = counts.observations[b], m = counts.targets[b];
+    // r_b is the mean of n encodings: each receives 1/n of dL/dr_b.
+    d_encoded.middleRows(obs_row, n).rowwise() =
+        d_input.block(target_row, 0, m, architecture_.width).colwise().sum() / static_cast<S>(n);
+    obs_row += n;
+    target_row += m;
+  }
+}
+
+template <class S>
 void Cnmp<S>::forward(nn::ConstMatRef<S> observations, nn::ConstMatRef<S> contexts,
                       nn::ConstMatRef<S> target_x, const std::vector<int>& observation_counts,
                       const std::vector<int>& target_counts) {
   const auto& a = architecture_;
-  const int tasks = static_cast<int>(observation_counts.size());
-  const auto encoded = encoder_.forward(observations);
-  auto r = representation_.resize(tasks, a.width);
+  encoder_.forward(observations);
+  representation_.resize(static_cast<nn::Index>(observation_counts.size()), a.width);
   auto input = decoder_input_.resize(target_x.rows(), a.width + a.d_context + a.d_x);
-  nn::Index obs_row = 0, target_row = 0;
-  for (int b = 0; b < tasks; ++b) {
-    const int n = observation_counts[b], m = target_counts[b];
-    r.row(b) = encoded.middleRows(obs_row, n).colwise().sum() / static_cast<S>(n);
-    input.block(target_row, 0, m, a.width).rowwise() = r.row(b);
-    if (a.d_context > 0) {
-      input.block(target_row, a.width, m, a.d_context).rowwise() = contexts.row(b);
-    }
-    obs_row += n;
-    target_row += m;
-  }
-  input.rightCols(a.d_x) = target_x;
+  fill_decoder_input(input, contexts, target_x, target_counts);
+  average_encodings(input, observation_counts, target_counts);
   decoder_.forward(input);
 }
 
@@ -66,17 +103,9 @@ S Cnmp<S>::train_step(nn::ConstMatRef<S> observations, nn::ConstMatRef<S> contex
   const S loss = loss_.value_and_grad(output.leftCols(a.d_y), output.rightCols(a.d_y), target_y,
                                       d_output.leftCols(a.d_y), d_output.rightCols(a.d_y));
   const auto d_input = decoder_.backward(d_output);
-  auto d_encoded = d_encoded_.resize(observations.rows(), a.width);
-  nn::Index obs_row = 0, target_row = 0;
-  for (size_t b = 0; b < counts.observations.size(); ++b) {
-    const int n = counts.observations[b], m = counts.targets[b];
-    // r_b is the mean of n encodings: each receives 1/n of dL/dr_b.
-    d_encoded.middleRows(obs_row, n).rowwise() =
-        d_input.block(target_row, 0, m, a.width).colwise().sum() / static_cast<S>(n);
-    obs_row += n;
-    target_row += m;
-  }
-  encoder_.backward_params_only(d_encoded);
+  d_encoded_.resize(observations.rows(), a.width);
+  spread_representation_grad(d_input, counts);
+  encoder_.backward_params_only(d_encoded_.view());
   return loss;
 }
 
@@ -87,16 +116,7 @@ void Cnmp<S>::prepare_step(nn::ConstMatRef<S> observations, nn::ConstMatRef<S> c
   encoder_.prepare(observations.rows());
   encoder_.input() = observations;
   decoder_.prepare(target_x.rows());
-  auto input = decoder_.input();
-  nn::Index target_row = 0;
-  for (size_t b = 0; b < counts.targets.size(); ++b) {
-    const int m = counts.targets[b];
-    if (a.d_context > 0) {
-      input.block(target_row, a.width, m, a.d_context).rowwise() = contexts.row(b);
-    }
-    target_row += m;
-  }
-  input.rightCols(a.d_x) = target_x;
+  fill_decoder_input(decoder_.input(), contexts, target_x, counts.targets);
   representation_.resize(static_cast<nn::Index>(counts.observations.size()), a.width);
   d_output_.resize(target_x.rows(), 2 * a.d_y);
   d_encoded_.resize(observations.rows(), a.width);
@@ -110,19 +130,7 @@ S Cnmp<S>::train_step_part(nn::ConstMatRef<S> target_y, const CnmpBatchCounts& c
   // The column sums over observations and targets run on member 0 alone, as whole-width Eigen
   // expressions on the buffers train_step uses: Eigen's summation order depends on where a block
   // starts in memory, so cutting them would change the last bits.
-  if (team.member == 0) {
-    const auto encoded = encoder_.output();
-    auto r = representation_.view();
-    auto input = decoder_.input();
-    nn::Index obs_row = 0, target_row = 0;
-    for (size_t b = 0; b < counts.observations.size(); ++b) {
-      const int n = counts.observations[b], m = counts.targets[b];
-      r.row(b) = encoded.middleRows(obs_row, n).colwise().sum() / static_cast<S>(n);
-      input.block(target_row, 0, m, a.width).rowwise() = r.row(b);
-      obs_row += n;
-      target_row += m;
-    }
-  }
+  if (team.member == 0) average_encodings(decoder_.input(), counts.observations, counts.targets);
   team.sync();
   decoder_.forward_part(team);
   if (team.member == 0) {
@@ -133,17 +141,7 @@ S Cnmp<S>::train_step_part(nn::ConstMatRef<S> target_y, const CnmpBatchCounts& c
   }
   team.sync();
   const auto d_input = decoder_.backward_part(d_output_.view(), true, team);
-  if (team.member == 0) {
-    auto d_encoded = d_encoded_.view();
-    nn::Index obs_row = 0, target_row = 0;
-    for (size_t b = 0; b < counts.observations.size(); ++b) {
-      const int n = counts.observations[b], m = counts.targets[b];
-      d_encoded.middleRows(obs_row, n).rowwise() =
-          d_input.block(target_row, 0, m, a.width).colwise().sum() / static_cast<S>(n);
-      obs_row += n;
-      target_row += m;
-    }
-  }
+  if (team.member == 0) spread_representation_grad(d_input, counts);
   team.sync();
   encoder_.backward_part(d_encoded_.view(), false, team);
   return shared_loss_;

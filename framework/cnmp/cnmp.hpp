@@ -74,6 +74,17 @@ class Cnmp {
                nn::ConstMatRef<S> target_x, const std::vector<int>& observation_counts,
                const std::vector<int>& target_counts);
 
+  // The context and query columns of the decoder input's rows.
+  void fill_decoder_input(nn::MatRef<S> input, nn::ConstMatRef<S> contexts,
+                          nn::ConstMatRef<S> target_x, const std::vector<int>& target_counts) const;
+  // r_b, the mean of task b's encodings (encoder output), into representation_ (shaped) and the
+  // first columns of its targets' decoder input rows.
+  void average_encodings(nn::MatRef<S> input, const std::vector<int>& observation_counts,
+                         const std::vector<int>& target_counts);
+  // dL/dr_b from the decoder input gradient, spread over task b's encodings into d_encoded_
+  // (shaped).
+  void spread_representation_grad(nn::ConstMatRef<S> d_input, const CnmpBatchCounts& counts);
+
   CnmpArchitecture architecture_;
   nn::Mlp<S> encoder_;
   nn::Mlp<S> decoder_;
