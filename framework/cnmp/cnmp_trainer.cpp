@@ -144,8 +144,8 @@ TrainingReport train_cnmp(CnmpModel& model, const std::vector<CnmpTrajectory>& t
   const auto parameters = model.network().parameters();
   // Two workers at most, and only for wide networks such as the monolithic baselines': the
   // layers are shared column by column with a barrier after each, and at the segment networks'
-  // width of 128 the second core gained 1.0-1.3x on the Zen 4 development machine (bench_cnmp
-  // BM_update_parallel), at 223 about 1.6x.
+  // width of 128 the second core gained 1.0-1.4x on the Zen 4 development machine (bench_cnmp
+  // BM_update_parallel), at 223 1.3x (1.5-1.6x while the shared host was quiet).
   const int workers =
       model.network().parameter_count() >= kTeamParameters && nn::gemm_float_split_exact() ? 2 : 1;
   ParallelCnmpStep updater(model.network(), params.learning_rate, parallel_workers(workers));
@@ -198,6 +198,7 @@ TrainingReport train_cnmp(CnmpModel& model, const std::vector<CnmpTrajectory>& t
   }
   if (!best.empty()) restore(parameters, best);
   report.updates = params.updates;
+  report.team_updates = updater.team_updates();
   report.seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
   progress.finish(status);
   return report;

@@ -95,6 +95,7 @@ struct TrainingReport {
   double final_loss = 0.0;  // mean loss over the last validation interval
   TrajectoryError best_validation;
   double seconds = 0.0;
+  int64_t team_updates = 0;  // updates run on two threads (cnmp/parallel_cnmp_step.hpp)
   std::vector<TrainingCurvePoint> curve;
 };
 

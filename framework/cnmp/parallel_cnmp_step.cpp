@@ -6,6 +6,8 @@
 #include <cmath>
 #include <stdexcept>
 
+#include "nn/gemm.hpp"
+
 namespace corrmp {
 
 ParallelCnmpStep::ParallelCnmpStep(Cnmp<float>& network, double learning_rate, int workers,
@@ -13,8 +15,8 @@ ParallelCnmpStep::ParallelCnmpStep(Cnmp<float>& network, double learning_rate, i
     : network_(network),
       params_(network.parameters()),
       adam_(params_, nn::AdamOptions{learning_rate}),
-      pool_(std::max(workers, 1)),
-      barrier_(std::max(workers, 1)),
+      pool_(nn::gemm_float_split_exact() ? std::max(workers, 1) : 1),
+      barrier_(pool_.size()),
       probe_every_(std::max<int64_t>(probe_every, 1)),
       probe_updates_(std::max<int64_t>(probe_updates, 0)) {
   constexpr nn::Index kBlock = nn::Adam<float>::kRangeAlignment;
@@ -49,9 +51,9 @@ float ParallelCnmpStep::step(const BatchSampler& sampler) {
 
 float ParallelCnmpStep::step_alone(const BatchSampler& sampler) {
   adam_.zero_grad();
+  gradients_zero_ = false;
   const float loss = sampler.step(network_);
   if (std::isfinite(loss)) adam_.step();
-  gradients_zero_ = false;
   return loss;
 }
 

@@ -33,7 +33,8 @@ namespace corrmp {
 
 class ParallelCnmpStep {
  public:
-  // Updates `network` (which must outlive this) by Adam on `workers` >= 1 threads.
+  // Updates `network` (which must outlive this) by Adam on `workers` >= 1 threads; on one where
+  // float products are not split-exact (nn::gemm_float_split_exact), which keeps the bits.
   ParallelCnmpStep(Cnmp<float>& network, double learning_rate, int workers,
                    int64_t probe_every = 4000, int64_t probe_updates = 100);
 

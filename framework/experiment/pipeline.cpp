@@ -130,12 +130,16 @@ void run_stages(Experiment& experiment, const fs::path& dir, const RunOptions& o
       {experiment.context.seeds.stream("policy.training"),
        experiment.context.seeds.stream("context"), extractor_cache, dir.string()});
   for (const auto& summary : summaries) {
+    const std::string team =
+        summary.report.team_updates > 0
+            ? fmt::format(" ({} updates on two threads)", summary.report.team_updates)
+            : "";
     spdlog::info(
         "'{}': {} parameters, best validation error {:.4g} (max {:.4g}) at update {} "
-        "of {}, {:.1f} s",
+        "of {}, {:.1f} s{}",
         summary.segment, summary.parameters, summary.report.best_validation.mean,
         summary.report.best_validation.max, summary.report.best_update, summary.report.updates,
-        summary.report.seconds);
+        summary.report.seconds, team);
     metrics.push_back({summary.segment + "_parameters", static_cast<double>(summary.parameters)});
   }
   experiment.policy->save((dir / "models").string());

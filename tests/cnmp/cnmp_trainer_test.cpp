@@ -114,6 +114,8 @@ TEST(CnmpTrainer, AWideNetworkTrainsIdenticallyOnOneAndTwoThreads) {
     weights.emplace_back();
     for (const auto& param : model.network().parameters()) weights.back().push_back(param.values());
   }
+  EXPECT_EQ(reports[0].team_updates, 0);
+  EXPECT_GT(reports[1].team_updates, 0);  // the two-thread run did use the team
   EXPECT_EQ(reports[0].best_update, reports[1].best_update);
   ASSERT_EQ(reports[0].curve.size(), reports[1].curve.size());
   for (size_t i = 0; i < reports[0].curve.size(); ++i) {

@@ -143,6 +143,9 @@ TEST(ParallelCnmpStep, ANonFiniteLossLeavesTheWeightsUnchanged) {
     good_batches.draw(rng);
     ASSERT_TRUE(std::isfinite(updater.step(good_batches)));
     EXPECT_FALSE((after[0].values().array() == before[0].array()).all());
+    // No gradient of the bad batch was left behind to reach this update.
+    for (size_t k = 0; k < after.size(); ++k)
+      EXPECT_TRUE(after[k].values().allFinite()) << "parameter " << k;
   }
 }
 
