@@ -72,9 +72,7 @@ class BatchSampler {
 
   // One forward and backward pass of `network` on the drawn batch; returns the loss.
   float step(Cnmp<float>& network) const {
-    return network.train_step(observations_.topRows(obs_rows_), contexts_,
-                              target_x_.topRows(target_rows_), target_y_.topRows(target_rows_),
-                              counts_);
+    return network.train_step(observations(), contexts_, target_x(), target_y(), counts_);
   }
 
   // The drawn batch, as step() passes it to the network.

@@ -17,17 +17,13 @@ ParallelCnmpStep::ParallelCnmpStep(Cnmp<float>& network, double learning_rate, i
       adam_(params_, nn::AdamOptions{learning_rate}),
       pool_(nn::gemm_float_split_exact() ? std::max(workers, 1) : 1),
       barrier_(pool_.size()),
+      blocks_(nn::Adam<float>::ranges(params_, nn::Adam<float>::kRangeAlignment)),
       probe_every_(std::max<int64_t>(probe_every, 1)),
-      probe_updates_(std::max<int64_t>(probe_updates, 0)) {
-  constexpr nn::Index kBlock = nn::Adam<float>::kRangeAlignment;
-  for (size_t k = 0; k < params_.size(); ++k)
-    for (nn::Index begin = 0; begin < params_[k].size(); begin += kBlock)
-      blocks_.push_back({k, begin, std::min(begin + kBlock, params_[k].size())});
-}
+      probe_updates_(std::max<int64_t>(probe_updates, 0)) {}
 
 void ParallelCnmpStep::update(size_t first, size_t last) {
   for (size_t b = first; b < last; ++b) {
-    const UpdateBlock& block = blocks_[b];
+    const nn::Adam<float>::Range& block = blocks_[b];
     adam_.update_range(block.parameter, block.begin, block.end);
     float* grad = params_[block.parameter].grad;
     std::fill(grad + block.begin, grad + block.end, 0.0f);

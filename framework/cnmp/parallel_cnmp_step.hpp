@@ -60,19 +60,12 @@ class ParallelCnmpStep {
   // their gradients.
   void update(size_t first, size_t last);
 
-  // Entries [begin, end) of one parameter, on Adam's range boundaries.
-  struct UpdateBlock {
-    size_t parameter;
-    nn::Index begin;
-    nn::Index end;
-  };
-
   Cnmp<float>& network_;
   std::vector<nn::Parameter<float>> params_;
   nn::Adam<float> adam_;
   WorkerPool pool_;
   nn::SpinBarrier barrier_;
-  std::vector<UpdateBlock> blocks_;  // every parameter entry, in parameter order
+  std::vector<nn::Adam<float>::Range> blocks_;  // every parameter entry, in parameter order
 
   int64_t probe_every_, probe_updates_;
   int64_t updates_ = 0, team_updates_ = 0;

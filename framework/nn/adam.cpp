@@ -45,6 +45,16 @@ void Adam<S>::begin_step() {
 }
 
 template <class S>
+std::vector<typename Adam<S>::Range> Adam<S>::ranges(const std::vector<Parameter<S>>& params,
+                                                     Index size) {
+  std::vector<Range> out;
+  for (std::size_t k = 0; k < params.size(); ++k)
+    for (Index begin = 0; begin < params[k].size(); begin += size)
+      out.push_back({k, begin, std::min(begin + size, params[k].size())});
+  return out;
+}
+
+template <class S>
 void Adam<S>::update_range(std::size_t k, Index begin, Index end) {
   const ScopedFlushDenormals flush_denormals;
   update_entries(k, begin, end);

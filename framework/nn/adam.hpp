@@ -51,6 +51,16 @@ class Adam {
   /// step() updates each parameter in pieces of this many entries, from its first.
   static constexpr Index kRangeAlignment = 2048;
 
+  /// Entries [begin, end) of parameter `parameter`: a unit of work for update_range.
+  struct Range {
+    std::size_t parameter;
+    Index begin;
+    Index end;
+  };
+  /// Every entry of the parameters, in parameter order, in ranges of `size` entries (a multiple
+  /// of kRangeAlignment, so that update_range on them is exactly step()).
+  static std::vector<Range> ranges(const std::vector<Parameter<S>>& params, Index size);
+
   std::int64_t step_count() const { return step_count_; }
   const AdamOptions& options() const { return options_; }
   void set_learning_rate(double learning_rate) { options_.learning_rate = learning_rate; }

@@ -109,9 +109,8 @@ ConstMatMap<S> Mlp<S>::backward_part(ConstMatRef<S> dy, bool input_grad, const T
       const auto [in_first, in_count] = team.share(sizes_[i]);
       layers_[i].input_grad_part(g_i, dx, in_first, in_count);
       if (i > 0 && in_count > 0) {
-        const auto a = outputs_[i - 1].view().middleCols(in_first, in_count);
         auto part = dx.middleCols(in_first, in_count);
-        part = (a.array() > S(0)).select(part.array(), S(0)).matrix();
+        Relu<S>().backward(outputs_[i - 1].view().middleCols(in_first, in_count), part, part);
       }
       current = next;
     }

@@ -17,17 +17,15 @@ DataParallelTrainer::DataParallelTrainer(ConvAutoencoder<float>& model, int shar
       pool_(workers > 0 ? std::min(workers, shards) : shards),
       inputs_(static_cast<size_t>(shards)),
       partial_(static_cast<size_t>(shards), 0.0),
-      adam_(model.parameters(), nn::AdamOptions{learning_rate}) {
+      adam_(model.parameters(), nn::AdamOptions{learning_rate}),
+      blocks_(nn::Adam<float>::ranges(adam_.parameters(), kUpdateBlock)) {
   params_.push_back(model.parameters());
   for (auto& replica : replicas_) params_.push_back(replica.parameters());
-  for (size_t k = 0; k < params_[0].size(); ++k)
-    for (nn::Index begin = 0; begin < params_[0][k].size(); begin += kUpdateBlock)
-      blocks_.push_back({k, begin, std::min(begin + kUpdateBlock, params_[0][k].size())});
 }
 
 void DataParallelTrainer::reduce_and_update(size_t first, size_t last, nn::Index batch) {
   for (size_t b = first; b < last; ++b) {
-    const UpdateBlock& block = blocks_[b];
+    const nn::Adam<float>::Range& block = blocks_[b];
     const nn::Index size = block.end - block.begin;
     float* sum = params_[0][block.parameter].grad + block.begin;
     for (int r = 1; r < shards_; ++r) {

@@ -56,13 +56,8 @@ class DataParallelTrainer {
   // on the entries of blocks [first, last).
   void reduce_and_update(size_t first, size_t last, nn::Index batch);
 
-  // Entries [begin, end) of parameter k: a unit of the gradient sum and Adam update.
-  struct UpdateBlock {
-    size_t parameter;
-    nn::Index begin;
-    nn::Index end;
-  };
-  // On Adam's range boundaries, so that the update is exactly Adam::step's.
+  // Blocks of this many entries: on Adam's range boundaries, so that the update is exactly
+  // Adam::step's.
   static constexpr nn::Index kUpdateBlock = 2 * nn::Adam<float>::kRangeAlignment;
 
   // Runs task(r) for every shard r on the pool's workers.
@@ -81,7 +76,7 @@ class DataParallelTrainer {
   std::vector<nn::Buffer<float>> inputs_;                  // each shard's images
   std::vector<double> partial_;                            // each shard's share of the loss
   nn::Adam<float> adam_;
-  std::vector<UpdateBlock> blocks_;  // every parameter entry, in parameter order
+  std::vector<nn::Adam<float>::Range> blocks_;  // every parameter entry, in parameter order
 };
 
 }  // namespace corrmp
