@@ -7,10 +7,13 @@
 
 #include <algorithm>
 #include <cmath>
+#include <condition_variable>
+#include <mutex>
 
 #include "core/interrupt.hpp"
 #include "core/json_writer.hpp"
 #include "core/progress.hpp"
+#include "core/thread_budget.hpp"
 #include "experiment/evaluation_tables.hpp"
 
 namespace corrmp {
@@ -18,6 +21,72 @@ namespace corrmp {
 namespace {
 
 using SegmentPaths = std::map<std::string, Eigen::MatrixXd>;
+
+// Trials run concurrently, each in its own environment (Environment::clone), while the policy
+// and the context extractor are shared: the policy generates one trajectory at a time, and the
+// extractor, which may keep state from call to call (the colour segmentation's camera-noise
+// stream and accuracy counts), extracts in trial order. Trial i makes its first extraction once
+// trial i - 1 has made its last (or ended), so the extractor sees the calls a single thread
+// would make, in the same order, and the results are the same whatever the thread count.
+class SharedModels {
+ public:
+  SharedModels(Policy& policy, ContextExtractor* extractor, int trials)
+      : policy_(policy),
+        extractor_(extractor),
+        extracted_(static_cast<size_t>(std::max(trials, 0)), false) {}
+
+  CnmpPrediction generate(const std::string& segment, const Eigen::MatrixXd& start,
+                          const Eigen::VectorXd& context, const Eigen::MatrixXd& query) {
+    const std::lock_guard<std::mutex> lock(policy_mutex_);
+    return policy_.generate(segment, start, context, query);
+  }
+
+  // Trial `trial`'s context of `segment`, after every extraction of the trials before it.
+  Eigen::VectorXd extract(int trial, const std::string& segment, const Observation& observation) {
+    if (extractor_ == nullptr) return Eigen::VectorXd();
+    std::unique_lock<std::mutex> lock(turn_mutex_);
+    turn_changed_.wait(lock, [&] { return next_ == trial; });
+    return extractor_->extract(segment, observation);
+  }
+
+  // Trial `trial` makes no further extraction: the next trial may start its own.
+  void done_extracting(int trial) {
+    {
+      const std::lock_guard<std::mutex> lock(turn_mutex_);
+      extracted_[static_cast<size_t>(trial)] = true;
+      while (next_ < static_cast<int>(extracted_.size()) && extracted_[static_cast<size_t>(next_)])
+        ++next_;
+    }
+    turn_changed_.notify_all();
+  }
+
+ private:
+  Policy& policy_;
+  ContextExtractor* extractor_;
+  std::mutex policy_mutex_;
+  std::mutex turn_mutex_;
+  std::condition_variable turn_changed_;
+  std::vector<bool> extracted_;  // per trial: made its last extraction
+  int next_ = 0;                 // the lowest trial that may still extract
+};
+
+// Marks a trial done extracting when it has made its last extraction, or when it ends.
+class ExtractionTurn {
+ public:
+  ExtractionTurn(SharedModels& models, int trial) : models_(models), trial_(trial) {}
+  ~ExtractionTurn() { done(); }
+  ExtractionTurn(const ExtractionTurn&) = delete;
+  ExtractionTurn& operator=(const ExtractionTurn&) = delete;
+  void done() {
+    if (!done_) models_.done_extracting(trial_);
+    done_ = true;
+  }
+
+ private:
+  SharedModels& models_;
+  int trial_;
+  bool done_ = false;
+};
 
 const SegmentInfo* find_segment(const std::vector<SegmentInfo>& segments, const std::string& name) {
   for (const auto& s : segments) {
@@ -37,8 +106,8 @@ int total_points(const std::vector<SegmentInfo>& segments) {
 // between the critical points the expert passed at its nominal tempo. What
 // is executed is the policy's own uniform query; this only reads it.
 // A relative segment is read as offsets from where the policy's span starts.
-void split_at_reference_phases(Policy& policy, const std::string& whole, const TaskReport& task,
-                               const std::vector<SegmentInfo>& segments,
+void split_at_reference_phases(SharedModels& models, const std::string& whole,
+                               const TaskReport& task, const std::vector<SegmentInfo>& segments,
                                const Demonstration& reference, const Eigen::MatrixXd& start,
                                const Eigen::VectorXd& context, EvaluatedTrial& out) {
   for (const auto& s : segments) {
@@ -52,7 +121,7 @@ void split_at_reference_phases(Policy& policy, const std::string& whole, const T
     }
     const Eigen::MatrixXd query =
         Eigen::VectorXd::LinSpaced(s.points, demonstrated->phase_begin, demonstrated->phase_end);
-    Eigen::MatrixXd path = policy.generate(whole, start, context, query).mean;
+    Eigen::MatrixXd path = models.generate(whole, start, context, query).mean;
     if (s.relative) {
       out.origins[s.name] = path.row(0);
       for (int c : relative_columns_of(task, path.cols())) path.col(c).array() -= path(0, c);
@@ -80,18 +149,27 @@ std::string details_json(const EvaluatedTrial& trial) {
   return details.str();
 }
 
-// Runs one trial: the expert's reference, then the policy segment by segment.
+// What the trials share: the expert, the policy and extractor (SharedModels), what the task
+// declares.
+struct TrialSetting {
+  DemonstrationSource& expert;
+  SharedModels& models;
+  std::vector<std::string> policy_segments;
+  bool images = false;  // the extractor reads camera images
+  TaskReport task;
+};
+
+// Runs one trial in `environment`: the expert's reference, then the policy segment by segment.
 EvaluatedTrial run_trial(int index, const Scenario& scenario, Environment& environment,
-                         DemonstrationSource& expert, ContextExtractor* extractor, Policy& policy,
-                         const TaskReport& task, SegmentPaths& reference_paths) {
+                         const TrialSetting& setting, SegmentPaths& reference_paths) {
+  ExtractionTurn turn(setting.models, index);
   const std::vector<SegmentInfo> env_segments = environment.segments();
-  const bool images = extractor != nullptr && extractor->needs_images();
   EvaluatedTrial trial;
   trial.trial = index;
   trial.scenario = scenario;
   Demonstration reference;
   try {
-    reference = expert.demonstrate(environment, scenario, false);
+    reference = setting.expert.demonstrate(environment, scenario, false);
     trial.expected_action = reference.decision;
   } catch (const std::runtime_error& e) {
     spdlog::warn("trial {}: the expert failed on this scenario: {}", index, e.what());
@@ -100,10 +178,11 @@ EvaluatedTrial run_trial(int index, const Scenario& scenario, Environment& envir
 
   environment.reset(scenario);
   std::string failure;
-  for (const std::string& segment : policy.segments()) {
-    const Observation observation = environment.observe(images);
-    const Eigen::VectorXd context =
-        extractor != nullptr ? extractor->extract(segment, observation) : Eigen::VectorXd();
+  for (size_t k = 0; k < setting.policy_segments.size(); ++k) {
+    const std::string& segment = setting.policy_segments[k];
+    const Observation observation = environment.observe(setting.images);
+    const Eigen::VectorXd context = setting.models.extract(index, segment, observation);
+    if (k + 1 == setting.policy_segments.size()) turn.done();
     if (context.size() > 0) trial.contexts[segment] = context;
     const SegmentInfo* info = find_segment(env_segments, segment);
     const Eigen::RowVectorXd start_row = environment.segment_start(segment);
@@ -111,10 +190,10 @@ EvaluatedTrial run_trial(int index, const Scenario& scenario, Environment& envir
     start << 0.0, start_row;
     const int points = info != nullptr ? info->points : total_points(env_segments);
     const Eigen::MatrixXd query = Eigen::VectorXd::LinSpaced(points, 0.0, 1.0);
-    const Eigen::MatrixXd path = policy.generate(segment, start, context, query).mean;
+    const Eigen::MatrixXd path = setting.models.generate(segment, start, context, query).mean;
     if (info == nullptr) {
-      split_at_reference_phases(policy, segment, task, env_segments, reference, start, context,
-                                trial);
+      split_at_reference_phases(setting.models, segment, setting.task, env_segments, reference,
+                                start, context, trial);
     } else {
       trial.generated[segment] = path;
       if (info->relative) trial.origins[segment] = environment.effector_position();
@@ -127,11 +206,19 @@ EvaluatedTrial run_trial(int index, const Scenario& scenario, Environment& envir
   trial.failure = trial.success ? "" : (failure.empty() ? outcome.failure : failure);
   trial.outcome = outcome.metrics;
   trial.details = outcome.details;
-  if (!task.decision_labels.empty() && trial.generated.count(task.decision_segment)) {
-    trial.chosen_action = environment.classify_decision(trial.generated[task.decision_segment]);
+  if (!setting.task.decision_labels.empty() &&
+      trial.generated.count(setting.task.decision_segment)) {
+    trial.chosen_action =
+        environment.classify_decision(trial.generated[setting.task.decision_segment]);
   }
   return trial;
 }
+
+// A trial and the expert's paths it is compared with.
+struct TrialRun {
+  EvaluatedTrial trial;
+  SegmentPaths reference;
+};
 
 }  // namespace
 
@@ -141,30 +228,48 @@ EnvironmentEvaluation evaluate_in_environment(Environment& environment, Demonstr
   EnvironmentEvaluation result;
   result.task = environment.report();
   const TaskReport& task = result.task;
-  std::map<std::string, TrajectoryErrorAccumulator> errors;
+  // The scenarios are drawn in trial order, before any trial runs.
+  std::vector<Scenario> scenarios;
+  for (int index = 0; index < trials; ++index)
+    scenarios.push_back(environment.sample_scenario(rng));
+
+  SharedModels models(policy, extractor, trials);
+  const TrialSetting setting{expert, models, policy.segments(),
+                             extractor != nullptr && extractor->needs_images(), task};
+  std::vector<TrialRun> runs(static_cast<size_t>(std::max(trials, 0)));
+  EnvironmentCopies environments(environment, parallel_workers(trials));
   Progress progress("evaluation", trials);
-  int successes = 0;
-  for (int index = 0; index < trials; ++index) {
-    check_interrupt();
-    const Scenario scenario = environment.sample_scenario(rng);
-    SegmentPaths reference;
-    EvaluatedTrial trial;
+  std::mutex progress_mutex;
+  int finished = 0, successes = 0;
+  parallel_for_with_workers(trials, environments.size(), [&](int index, int worker) {
+    const Scenario& scenario = scenarios[static_cast<size_t>(index)];
+    TrialRun& run = runs[static_cast<size_t>(index)];
     try {
-      trial = run_trial(index, scenario, environment, expert, extractor, policy, task, reference);
+      run.trial = run_trial(index, scenario, environments[worker], setting, run.reference);
     } catch (const Interrupted&) {
       throw;
     } catch (const std::exception& e) {
       // One trial that cannot run is a failed trial with its reason, not a failed run.
       spdlog::warn("trial {} ({}): {}", index, scenario_json(scenario), e.what());
-      trial = EvaluatedTrial{};
-      trial.trial = index;
-      trial.scenario = scenario;
-      trial.failure = std::string("error: ") + e.what();
+      run.trial = EvaluatedTrial{};
+      run.trial.trial = index;
+      run.trial.scenario = scenario;
+      run.trial.failure = std::string("error: ") + e.what();
     }
+    const std::lock_guard<std::mutex> lock(progress_mutex);
+    successes += run.trial.success;
+    ++finished;
+    progress.advance(1, fmt::format("{} of {} succeeded", successes, finished));
+  });
+  progress.finish(fmt::format("{} of {} succeeded", successes, trials));
+
+  std::map<std::string, TrajectoryErrorAccumulator> errors;
+  for (TrialRun& run : runs) {
+    EvaluatedTrial& trial = run.trial;
     // Only segments the expert also showed, at the same resolution, are kept.
     for (auto it = trial.generated.begin(); it != trial.generated.end();) {
-      const auto demonstrated = reference.find(it->first);
-      if (demonstrated == reference.end() || demonstrated->second.rows() != it->second.rows()) {
+      const auto demonstrated = run.reference.find(it->first);
+      if (demonstrated == run.reference.end() || demonstrated->second.rows() != it->second.rows()) {
         it = trial.generated.erase(it);
         continue;
       }
@@ -177,14 +282,11 @@ EnvironmentEvaluation evaluate_in_environment(Environment& environment, Demonstr
       }
       ++it;
     }
-    result.trials.push_back(TrialRecord{index, scenario_json(scenario), trial.expected_action,
-                                        trial.chosen_action, trial.success, trial.failure,
-                                        details_json(trial)});
-    successes += trial.success;
+    result.trials.push_back(TrialRecord{trial.trial, scenario_json(trial.scenario),
+                                        trial.expected_action, trial.chosen_action, trial.success,
+                                        trial.failure, details_json(trial)});
     result.evaluated.push_back(std::move(trial));
-    progress.advance(1, fmt::format("{} of {} succeeded", successes, index + 1));
   }
-  progress.finish(fmt::format("{} of {} succeeded", successes, trials));
 
   std::map<std::string, TrajectoryError> segment_errors;
   for (const auto& [segment, accumulator] : errors) segment_errors[segment] = accumulator.result();

@@ -6,6 +6,13 @@
 // context observed at the segment's start. What is measured is what the task
 // declares (TaskReport): the decision table (the paper's Table I), the
 // trajectory errors of its error segments (Table II) and its outcome metrics.
+//
+// The trials run in parallel (core/thread_budget.hpp), each in its own environment
+// (Environment::clone; one after another where the task cannot clone), with the results a single
+// thread gives: the scenarios are drawn in trial order first, the policy generates one
+// trajectory at a time, the context extractor sees its calls in trial order, and the records
+// come in trial order. The expert demonstrates in several environments at once, as when it
+// collects.
 #pragma once
 
 #include <string>

@@ -2,13 +2,19 @@
 // expert's own recording succeeds, makes the expert's decisions, and its
 // segments (cut at the reference's critical points) match the expert's; on a
 // made-up task, a relative segment starts from zero offsets and is executed
-// from where the effector is, and a trial that throws is a failed trial.
+// from where the effector is, and a trial that throws is a failed trial. Trials
+// run in parallel with the results of one thread, the extractor called in trial
+// order.
 #include "experiment/environment_evaluation.hpp"
 
 #include <gtest/gtest.h>
 
+#include <chrono>
 #include <map>
+#include <thread>
 
+#include "context/perfect_context.hpp"
+#include "core/thread_budget.hpp"
 #include "envs/corridor_push/corridor_expert.hpp"
 
 namespace corrmp {
@@ -27,11 +33,28 @@ Eigen::MatrixXd interpolate(const Eigen::VectorXd& t, const Eigen::MatrixXd& y,
   return out;
 }
 
-// A monolithic "policy" that knows the answer: it looks up the corridor in
-// the live environment and replays the expert's whole-skill recording.
+// Sets the thread budget for a scope.
+class BudgetForScope {
+ public:
+  explicit BudgetForScope(int budget) : saved_(thread_budget()) { set_thread_budget(budget); }
+  ~BudgetForScope() { set_thread_budget(saved_); }
+
+ private:
+  int saved_;
+};
+
+// The perfect context of the whole skill: the corridor's x.
+PerfectContext corridor_context() {
+  PerfectContextParams params;
+  params.segments = {{"full", {"corridor_x"}}};
+  return PerfectContext(params);
+}
+
+// A monolithic "policy" that knows the answer: given the corridor's x as its
+// context, it replays the expert's whole-skill recording.
 class ReplayingPolicy : public Policy {
  public:
-  explicit ReplayingPolicy(const CorridorPush& live) : live_(live), own_(CorridorPushParams{}) {
+  ReplayingPolicy() : own_(CorridorPushParams{}) {
     own_.reset({{"corridor_offset", 0.0}, {"object_dx", 0.0}, {"object_dy", 0.0}});
     nominal_corridor_x_ = own_.corridor_x();
   }
@@ -41,11 +64,11 @@ class ReplayingPolicy : public Policy {
     return {};
   }
   std::vector<std::string> segments() const override { return {"full"}; }
-  std::vector<std::string> context_segments() const override { return {}; }
+  std::vector<std::string> context_segments() const override { return {"full"}; }
   CnmpPrediction generate(const std::string& segment, const Eigen::MatrixXd&,
-                          const Eigen::VectorXd&, const Eigen::MatrixXd& query_x) override {
+                          const Eigen::VectorXd& context, const Eigen::MatrixXd& query_x) override {
     EXPECT_EQ(segment, "full");
-    const double offset = live_.corridor_x() - nominal_corridor_x_;
+    const double offset = context(0) - nominal_corridor_x_;
     if (recordings_.count(offset) == 0) {
       const Scenario scenario{{"corridor_offset", offset}, {"object_dx", 0.0}, {"object_dy", 0.0}};
       recordings_[offset] =
@@ -58,7 +81,6 @@ class ReplayingPolicy : public Policy {
   void save(const std::string&) override {}
 
  private:
-  const CorridorPush& live_;
   CorridorPush own_;
   double nominal_corridor_x_ = 0.0;
   std::map<double, SegmentTrajectory> recordings_;
@@ -67,11 +89,12 @@ class ReplayingPolicy : public Policy {
 TEST(EnvironmentEvaluation, AWholeSkillPolicyIsCutAtTheReferencesCriticalPoints) {
   CorridorPush environment{CorridorPushParams{}};
   CorridorExpert expert{CorridorExpertParams{}};
-  ReplayingPolicy policy(environment);
+  PerfectContext context = corridor_context();
+  ReplayingPolicy policy;
   Rng rng(11);
   const int trials = 4;
   const EnvironmentEvaluation result =
-      evaluate_in_environment(environment, expert, nullptr, policy, trials, rng, "replay");
+      evaluate_in_environment(environment, expert, &context, policy, trials, rng, "replay");
   ASSERT_EQ(result.trials.size(), 4u);
   for (const TrialRecord& trial : result.trials) {
     EXPECT_TRUE(trial.success) << trial.scenario << ": " << trial.failure;
@@ -233,6 +256,94 @@ TEST(EnvironmentEvaluation, ATrialThatThrowsIsAFailedTrialWithItsReason) {
   for (const auto& trial : result.trials) {
     EXPECT_FALSE(trial.success);
     EXPECT_EQ(trial.failure, "error: cannot reset");
+  }
+}
+
+// The records, metrics and tables of `trials` corridor trials on `budget` threads.
+EnvironmentEvaluation replay_corridor(int budget, int trials) {
+  const BudgetForScope scope(budget);
+  CorridorPush environment{CorridorPushParams{}};
+  CorridorExpert expert{CorridorExpertParams{}};
+  PerfectContext context = corridor_context();
+  ReplayingPolicy policy;
+  Rng rng(23);
+  return evaluate_in_environment(environment, expert, &context, policy, trials, rng, "replay");
+}
+
+TEST(EnvironmentEvaluation, TrialsOnTwoThreadsGiveTheResultsOfOne) {
+  const EnvironmentEvaluation one = replay_corridor(1, 5);
+  const EnvironmentEvaluation two = replay_corridor(2, 5);
+  ASSERT_EQ(one.trials.size(), 5u);
+  ASSERT_EQ(two.trials.size(), 5u);
+  for (size_t t = 0; t < one.trials.size(); ++t) {
+    EXPECT_EQ(two.trials[t].trial, static_cast<int>(t));
+    EXPECT_EQ(two.trials[t].scenario, one.trials[t].scenario);
+    EXPECT_EQ(two.trials[t].success, one.trials[t].success);
+    EXPECT_EQ(two.trials[t].chosen_action, one.trials[t].chosen_action);
+    EXPECT_EQ(two.trials[t].details, one.trials[t].details);  // contexts and outcome values
+    for (const auto& [segment, path] : one.evaluated[t].generated)
+      EXPECT_EQ(two.evaluated[t].generated.at(segment), path) << segment;
+  }
+  ASSERT_EQ(two.metrics.size(), one.metrics.size());
+  for (size_t m = 0; m < one.metrics.size(); ++m) {
+    EXPECT_EQ(two.metrics[m].name, one.metrics[m].name);
+    EXPECT_EQ(two.metrics[m].value, one.metrics[m].value) << one.metrics[m].name;
+  }
+  EXPECT_EQ(two.tables, one.tables);
+}
+
+// A line task that can be cloned, whose first trial dawdles in its first segment: a later
+// trial running beside it would extract before the first trial's second extraction.
+class SlowLineTask : public LineTask {
+ public:
+  std::unique_ptr<Environment> clone() const override { return std::make_unique<SlowLineTask>(); }
+  void reset(const Scenario& scenario) override {
+    LineTask::reset(scenario);
+    first_trial_ = scenario.at("index") == 0.0;
+  }
+  Scenario sample_scenario(Rng&) const override { return {{"throw", 1.0}, {"index", drawn_++}}; }
+  std::string execute(const std::string& segment, const Eigen::MatrixXd& rows) override {
+    if (first_trial_ && segment == "move")
+      std::this_thread::sleep_for(std::chrono::milliseconds(50));
+    return LineTask::execute(segment, rows);
+  }
+
+ private:
+  bool first_trial_ = false;
+  mutable double drawn_ = 0.0;
+};
+
+// An extractor whose contexts are its call count: what it returns depends on the order of calls.
+class CountingExtractor : public ContextExtractor {
+ public:
+  void fit(const std::vector<Demonstration>&, const ExtractorCache&, Rng&) override {}
+  Eigen::VectorXd extract(const std::string&, const Observation&) override {
+    return Eigen::VectorXd::Constant(1, calls_++);
+  }
+  std::vector<std::string> segments() const override { return {"move", "nudge"}; }
+  bool needs_images() const override { return false; }
+
+ private:
+  int calls_ = 0;
+};
+
+TEST(EnvironmentEvaluation, TheExtractorIsCalledInTrialOrderWhateverTheThreads) {
+  for (const int budget : {1, 2}) {
+    const BudgetForScope scope(budget);
+    SlowLineTask task;
+    LineExpert expert;
+    LinePolicy policy;
+    CountingExtractor extractor;
+    Rng rng(3);
+    const EnvironmentEvaluation result =
+        evaluate_in_environment(task, expert, &extractor, policy, 4, rng, "line");
+    ASSERT_EQ(result.evaluated.size(), 4u);
+    for (int t = 0; t < 4; ++t) {
+      const EvaluatedTrial& trial = result.evaluated[static_cast<size_t>(t)];
+      EXPECT_EQ(trial.contexts.at("move")(0), 2 * t) << "budget " << budget << ", trial " << t;
+      EXPECT_EQ(trial.contexts.at("nudge")(0), 2 * t + 1) << "budget " << budget << ", trial " << t;
+      EXPECT_TRUE(trial.success) << trial.failure;
+    }
   }
 }
 
