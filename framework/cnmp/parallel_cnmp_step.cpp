@@ -9,6 +9,17 @@
 #include "nn/gemm.hpp"
 
 namespace corrmp {
+namespace {
+
+// The median of `values` (reordered), or 0 for none.
+double median(std::vector<double>& values) {
+  if (values.empty()) return 0.0;
+  const auto middle = values.begin() + static_cast<std::ptrdiff_t>(values.size() / 2);
+  std::nth_element(values.begin(), middle, values.end());
+  return *middle;
+}
+
+}  // namespace
 
 ParallelCnmpStep::ParallelCnmpStep(Cnmp<float>& network, double learning_rate, int workers,
                                    int64_t probe_every, int64_t probe_updates)
@@ -33,15 +44,19 @@ void ParallelCnmpStep::update(size_t first, size_t last) {
 float ParallelCnmpStep::step(const BatchSampler& sampler) {
   if (pool_.size() == 1) return step_alone(sampler);
   const int64_t phase = updates_++ % probe_every_;
-  if (phase == 0) team_seconds_ = alone_seconds_ = 0.0;
+  if (phase == 0) {
+    team_seconds_.clear();
+    alone_seconds_.clear();
+  }
   if (phase >= 2 * probe_updates_)
     return team_faster_ ? step_as_team(sampler) : step_alone(sampler);
   const bool team = phase < probe_updates_;
   const auto start = std::chrono::steady_clock::now();
   const float loss = team ? step_as_team(sampler) : step_alone(sampler);
-  (team ? team_seconds_ : alone_seconds_) +=
-      std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
-  if (phase + 1 == 2 * probe_updates_) team_faster_ = team_seconds_ <= alone_seconds_;
+  (team ? team_seconds_ : alone_seconds_)
+      .push_back(std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count());
+  if (phase + 1 == 2 * probe_updates_)
+    team_faster_ = median(team_seconds_) <= median(alone_seconds_);
   return loss;
 }
 

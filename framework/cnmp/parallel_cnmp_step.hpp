@@ -17,7 +17,8 @@
 // host the second core can be slowed or taken away for seconds, and the team then runs slower
 // than one thread. Both give the same bits, so the update times them in turn: of every
 // `probe_every` updates, the first `probe_updates` run on the team, the next `probe_updates` on
-// one thread, and the faster runs the rest.
+// one thread, and the faster by the median update time runs the rest (the median, so that one
+// update the host stalled for milliseconds does not decide).
 #pragma once
 
 #include <cstddef>
@@ -36,7 +37,7 @@ class ParallelCnmpStep {
   // Updates `network` (which must outlive this) by Adam on `workers` >= 1 threads; on one where
   // float products are not split-exact (nn::gemm_float_split_exact), which keeps the bits.
   ParallelCnmpStep(Cnmp<float>& network, double learning_rate, int workers,
-                   int64_t probe_every = 4000, int64_t probe_updates = 100);
+                   int64_t probe_every = 4000, int64_t probe_updates = 50);
 
   void set_learning_rate(double learning_rate) { adam_.set_learning_rate(learning_rate); }
 
@@ -69,7 +70,7 @@ class ParallelCnmpStep {
 
   int64_t probe_every_, probe_updates_;
   int64_t updates_ = 0, team_updates_ = 0;
-  double team_seconds_ = 0.0, alone_seconds_ = 0.0;  // in the current probe
+  std::vector<double> team_seconds_, alone_seconds_;  // each update's, in the current probe
   bool team_faster_ = true;
   bool gradients_zero_ = false;  // as the team expects them on entry
 };
