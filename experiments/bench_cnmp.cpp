@@ -99,7 +99,8 @@ void BM_update_parallel(benchmark::State& state) {
   params.max_targets = 10;
   BatchSampler sampler(data, a, params);
   // Always the team (no timing against one thread), to measure it.
-  ParallelCnmpStep updater(model.network(), 1e-4, static_cast<int>(state.range(1)), 1, 0);
+  ParallelCnmpStep updater(model.network(), 1e-4, static_cast<int>(state.range(1)), TeamCores::own,
+                           1, 0);
   Rng rng(7);
   for (auto _ : state) {
     sampler.draw(rng);

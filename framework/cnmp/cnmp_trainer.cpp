@@ -142,13 +142,17 @@ TrainingReport train_cnmp(CnmpModel& model, const std::vector<CnmpTrajectory>& t
   const auto data = normalise(model, train);
   BatchSampler sampler(data, a, params);
   const auto parameters = model.network().parameters();
-  // Two workers at most, and only for wide networks such as the monolithic baselines': the
-  // layers are shared column by column with a barrier after each, and at the segment networks'
-  // width of 128 the second core gained 1.0-1.4x on the Zen 4 development machine (bench_cnmp
-  // BM_update_parallel), at 223 1.3x (1.5-1.6x while the shared host was quiet).
-  const int workers =
-      model.network().parameter_count() >= kTeamParameters && nn::gemm_float_split_exact() ? 2 : 1;
-  ParallelCnmpStep updater(model.network(), params.learning_rate, parallel_workers(workers));
+  // Two workers at most. A wide network such as the monolithic baselines' has its own second
+  // core when the budget gives one: the layers are shared column by column with a barrier after
+  // each, and at the segment networks' width of 128 the second core gained 1.0-1.4x on the Zen 4
+  // development machine (bench_cnmp BM_update_parallel), at 223 1.3x (1.5-1.6x while the shared
+  // host was quiet). Any other network borrows the core of a thread that waits for others' work
+  // (the last segment network of a loop, or the one trained beside the context extractor); the
+  // team then runs where it is the faster.
+  const bool splittable = nn::gemm_float_split_exact() && thread_budget() >= 2;
+  const bool own = model.network().parameter_count() >= kTeamParameters && parallel_workers(2) == 2;
+  ParallelCnmpStep updater(model.network(), params.learning_rate, splittable ? 2 : 1,
+                           own ? TeamCores::own : TeamCores::borrowed);
   std::unique_ptr<CnmpModel> validator;  // predicts beside the model when there are two workers
 
   TrainingReport report;
@@ -181,7 +185,7 @@ TrainingReport train_cnmp(CnmpModel& model, const std::vector<CnmpTrajectory>& t
       TrainingCurvePoint point{update, report.final_loss, std::nan(""), std::nan("")};
       if (!validation.empty()) {
         const TrajectoryError error =
-            validation_error(model, validator, validation, updater.workers());
+            validation_error(model, validator, validation, own ? updater.workers() : 1);
         point.validation_mean = error.mean;
         point.validation_max = error.max;
         status += fmt::format(", validation error {:.4g} (max {:.4g})", error.mean, error.max);

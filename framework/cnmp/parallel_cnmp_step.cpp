@@ -6,6 +6,7 @@
 #include <cmath>
 #include <stdexcept>
 
+#include "core/thread_budget.hpp"
 #include "nn/gemm.hpp"
 
 namespace corrmp {
@@ -22,7 +23,7 @@ double median(std::vector<double>& values) {
 }  // namespace
 
 ParallelCnmpStep::ParallelCnmpStep(Cnmp<float>& network, double learning_rate, int workers,
-                                   int64_t probe_every, int64_t probe_updates)
+                                   TeamCores cores, int64_t probe_every, int64_t probe_updates)
     : network_(network),
       params_(network.parameters()),
       adam_(params_, nn::AdamOptions{learning_rate}),
@@ -30,7 +31,12 @@ ParallelCnmpStep::ParallelCnmpStep(Cnmp<float>& network, double learning_rate, i
       barrier_(pool_.size()),
       blocks_(nn::Adam<float>::ranges(params_, nn::Adam<float>::kRangeAlignment)),
       probe_every_(std::max<int64_t>(probe_every, 1)),
-      probe_updates_(std::max<int64_t>(probe_updates, 0)) {}
+      probe_updates_(std::max<int64_t>(probe_updates, 0)),
+      cores_(cores) {}
+
+ParallelCnmpStep::~ParallelCnmpStep() {
+  if (borrowed_) return_spare_thread();
+}
 
 void ParallelCnmpStep::update(size_t first, size_t last) {
   for (size_t b = first; b < last; ++b) {
@@ -47,7 +53,9 @@ float ParallelCnmpStep::step(const BatchSampler& sampler) {
   if (phase == 0) {
     team_seconds_.clear();
     alone_seconds_.clear();
+    if (cores_ == TeamCores::borrowed && !borrowed_) borrowed_ = borrow_spare_thread();
   }
+  if (cores_ == TeamCores::borrowed && !borrowed_) return step_alone(sampler);
   if (phase >= 2 * probe_updates_)
     return team_faster_ ? step_as_team(sampler) : step_alone(sampler);
   const bool team = phase < probe_updates_;

@@ -32,12 +32,21 @@
 
 namespace corrmp {
 
+// Whether the team's second thread has a core of its own, or borrows one a thread that waits
+// for others' work lends (core/thread_budget.hpp: SpareThread). A borrowing update runs alone
+// until a core is lent (it asks at the start of every `probe_every` updates), then keeps it.
+enum class TeamCores { own, borrowed };
+
 class ParallelCnmpStep {
  public:
   // Updates `network` (which must outlive this) by Adam on `workers` >= 1 threads; on one where
   // float products are not split-exact (nn::gemm_float_split_exact), which keeps the bits.
   ParallelCnmpStep(Cnmp<float>& network, double learning_rate, int workers,
-                   int64_t probe_every = 4000, int64_t probe_updates = 50);
+                   TeamCores cores = TeamCores::own, int64_t probe_every = 4000,
+                   int64_t probe_updates = 50);
+  ~ParallelCnmpStep();
+  ParallelCnmpStep(const ParallelCnmpStep&) = delete;
+  ParallelCnmpStep& operator=(const ParallelCnmpStep&) = delete;
 
   void set_learning_rate(double learning_rate) { adam_.set_learning_rate(learning_rate); }
 
@@ -72,6 +81,8 @@ class ParallelCnmpStep {
   int64_t updates_ = 0, team_updates_ = 0;
   std::vector<double> team_seconds_, alone_seconds_;  // each update's, in the current probe
   bool team_faster_ = true;
+  TeamCores cores_;
+  bool borrowed_ = false;        // a core lent to the team (TeamCores::borrowed)
   bool gradients_zero_ = false;  // as the team expects them on entry
 };
 

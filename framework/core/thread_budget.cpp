@@ -5,6 +5,7 @@
 #include <atomic>
 #include <exception>
 #include <limits>
+#include <memory>
 #include <stdexcept>
 #include <system_error>
 #include <thread>
@@ -82,6 +83,22 @@ void set_thread_budget(int n) {
 
 int thread_budget() { return g_budget.load(); }
 
+namespace {
+std::atomic<int> g_spare{0};  // waiting threads whose core no one borrowed
+}  // namespace
+
+SpareThread::SpareThread() { ++g_spare; }
+SpareThread::~SpareThread() { --g_spare; }
+
+bool borrow_spare_thread() {
+  int spare = g_spare.load();
+  while (spare > 0 && !g_spare.compare_exchange_weak(spare, spare - 1)) {
+  }
+  return spare > 0;
+}
+
+void return_spare_thread() { ++g_spare; }
+
 int parallel_workers(int count) {
   if (count <= 0) return 0;
   return t_inside_task ? 1 : std::min(count, thread_budget());
@@ -102,14 +119,20 @@ void parallel_for_with_workers(int count, int max_workers,
   Loop loop(count, task);
   std::vector<std::thread> threads;
   threads.reserve(static_cast<size_t>(workers - 1));
+  // A worker with no task left is spare until the loop ends, when they all are.
+  std::vector<std::unique_ptr<SpareThread>> spare(static_cast<size_t>(workers));
   for (int worker = 1; worker < workers; ++worker) {
     try {
-      threads.emplace_back([&loop, worker] { loop.work(worker); });
+      threads.emplace_back([&loop, &spare, worker] {
+        loop.work(worker);
+        spare[static_cast<size_t>(worker)] = std::make_unique<SpareThread>();
+      });
     } catch (const std::system_error&) {
       break;  // no more threads to be had: the ones started share the tasks
     }
   }
   loop.work(0);
+  spare[0] = std::make_unique<SpareThread>();
   for (std::thread& thread : threads) thread.join();
   loop.rethrow();
 }

@@ -61,4 +61,21 @@ class InlineLoops {
 void parallel_for_with_workers(int count, int max_workers,
                                const std::function<void(int index, int worker)>& task);
 
+// Threads of the budget that wait for others' work: a loop's worker that found no task left
+// (until the loop's last task ends), and the pipeline's thread waiting for the networks that
+// read no context (experiment/policy_fitting.cpp). While one waits, a task that can share its
+// work (a CNMP's updates, cnmp/parallel_cnmp_step.hpp) may borrow its core for a second thread.
+class SpareThread {
+ public:
+  SpareThread();
+  ~SpareThread();
+  SpareThread(const SpareThread&) = delete;
+  SpareThread& operator=(const SpareThread&) = delete;
+};
+
+// Takes one waiting thread's core if there is one (true), to give back with
+// return_spare_thread(); a borrowed core is not lent twice.
+bool borrow_spare_thread();
+void return_spare_thread();
+
 }  // namespace corrmp

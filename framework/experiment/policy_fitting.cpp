@@ -89,11 +89,14 @@ std::vector<PolicyTrainingSummary> fit_extractor_and_policy(Policy& policy,
 
   std::vector<PolicyTrainingSummary> summaries =
       policy.fit(demos.train, demos.validation, rng, Networks::with_context);
-  for (auto& summary : context_free.valid() ? context_free.get()
-                                            : policy.fit(demos.train, demos.validation, rng,
-                                                         Networks::without_context)) {
-    summaries.push_back(std::move(summary));
+  std::vector<PolicyTrainingSummary> without_context;
+  if (context_free.valid()) {
+    const SpareThread waiting;  // its core may speed up the networks still training
+    without_context = context_free.get();
+  } else {
+    without_context = policy.fit(demos.train, demos.validation, rng, Networks::without_context);
   }
+  for (auto& summary : without_context) summaries.push_back(std::move(summary));
   sort_by_segment(policy, summaries);
   return summaries;
 }

@@ -9,6 +9,7 @@
 #include <cstring>
 #include <limits>
 
+#include "core/thread_budget.hpp"
 #include "nn/gemm.hpp"
 
 namespace corrmp {
@@ -36,7 +37,8 @@ struct Trained {
 };
 
 Trained train(const CnmpArchitecture& a, int workers, int updates, int64_t probe_every = 4000,
-              int64_t probe_updates = 100, int64_t* team_updates = nullptr) {
+              int64_t probe_updates = 100, int64_t* team_updates = nullptr,
+              TeamCores cores = TeamCores::own) {
   CnmpModel model(a, 3);
   const auto data = waves(a, 12, 40);
   CnmpTrainingParams params;
@@ -44,7 +46,7 @@ Trained train(const CnmpArchitecture& a, int workers, int updates, int64_t probe
   params.max_observations = 6;
   params.max_targets = 9;
   BatchSampler sampler(data, a, params);
-  ParallelCnmpStep updater(model.network(), 1e-3, workers, probe_every, probe_updates);
+  ParallelCnmpStep updater(model.network(), 1e-3, workers, cores, probe_every, probe_updates);
   EXPECT_EQ(updater.workers(), workers);
   Rng rng(11);
   Trained out;
@@ -114,6 +116,25 @@ TEST(ParallelCnmpStep, SwitchingBetweenTheTeamAndOneThreadKeepsTheBits) {
   expect_identical(one, train(a, 2, 35, 7, 2, &team_updates));
   EXPECT_GE(team_updates, 10);  // the team's probes
   EXPECT_LE(team_updates, 25);  // not the other probes
+}
+
+// A team that borrows its second core runs alone while no thread waits, and on the team once
+// one lends its core (the team being the faster here: no probes), with the same bits.
+TEST(ParallelCnmpStep, ABorrowingTeamRunsOnlyOnALentCore) {
+  SKIP_UNLESS_SPLIT_EXACT();
+  const CnmpArchitecture a = architecture(64, 1);
+  const Trained one = train(a, 1, 20);
+  int64_t team_updates = -1;
+  expect_identical(one, train(a, 2, 20, 5, 0, &team_updates, TeamCores::borrowed));
+  EXPECT_EQ(team_updates, 0);
+  {
+    const SpareThread waiting;
+    expect_identical(one, train(a, 2, 20, 5, 0, &team_updates, TeamCores::borrowed));
+    EXPECT_EQ(team_updates, 20);
+    EXPECT_TRUE(borrow_spare_thread());  // the team gave the core back when it was done
+    return_spare_thread();
+  }
+  EXPECT_FALSE(borrow_spare_thread());
 }
 
 // A batch whose loss is NaN (one NaN target) leaves the weights as the previous update left

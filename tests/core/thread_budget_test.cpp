@@ -171,5 +171,39 @@ TEST_F(ThreadBudget, ASignalStopsTheLoopWithInterrupted) {
       ::testing::ExitedWithCode(0), "");
 }
 
+// A waiting thread's core is lent once at a time, and given back.
+TEST_F(ThreadBudget, AWaitingThreadsCoreIsLentToOneBorrowerAtATime) {
+  EXPECT_FALSE(borrow_spare_thread());
+  {
+    const SpareThread waiting;
+    EXPECT_TRUE(borrow_spare_thread());
+    EXPECT_FALSE(borrow_spare_thread());
+    return_spare_thread();
+    EXPECT_TRUE(borrow_spare_thread());
+    return_spare_thread();
+  }
+  EXPECT_FALSE(borrow_spare_thread());
+}
+
+// A loop's worker that found no task left lends its core to the tasks still running, until the
+// loop ends.
+TEST_F(ThreadBudget, ALoopsIdleWorkerLendsItsCoreUntilTheLoopEnds) {
+  set_thread_budget(2);
+  std::atomic<bool> borrowed{false};
+  parallel_for(2, [&](int index) {
+    if (index == 0) return;
+    const auto give_up = std::chrono::steady_clock::now() + std::chrono::seconds(10);
+    while (!borrowed && std::chrono::steady_clock::now() < give_up) {
+      if (borrow_spare_thread()) {
+        borrowed = true;
+        return_spare_thread();
+      }
+      std::this_thread::yield();
+    }
+  });
+  EXPECT_TRUE(borrowed);
+  EXPECT_FALSE(borrow_spare_thread());
+}
+
 }  // namespace
 }  // namespace corrmp
