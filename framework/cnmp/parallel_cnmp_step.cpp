@@ -53,6 +53,7 @@ float ParallelCnmpStep::step(const BatchSampler& sampler) {
   if (phase == 0) {
     team_seconds_.clear();
     alone_seconds_.clear();
+    if (borrowed_ && spare_thread_recalled()) borrowed_ = false;
     if (cores_ == TeamCores::borrowed && !borrowed_) borrowed_ = borrow_spare_thread();
   }
   if (cores_ == TeamCores::borrowed && !borrowed_) return step_alone(sampler);
@@ -63,8 +64,13 @@ float ParallelCnmpStep::step(const BatchSampler& sampler) {
   const float loss = team ? step_as_team(sampler) : step_alone(sampler);
   (team ? team_seconds_ : alone_seconds_)
       .push_back(std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count());
-  if (phase + 1 == 2 * probe_updates_)
+  if (phase + 1 == 2 * probe_updates_) {
     team_faster_ = median(team_seconds_) <= median(alone_seconds_);
+    if (borrowed_ && !team_faster_) {
+      return_spare_thread();  // another network may gain from it
+      borrowed_ = false;
+    }
+  }
   return loss;
 }
 

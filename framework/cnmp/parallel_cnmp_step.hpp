@@ -34,7 +34,8 @@ namespace corrmp {
 
 // Whether the team's second thread has a core of its own, or borrows one a thread that waits
 // for others' work lends (core/thread_budget.hpp: SpareThread). A borrowing update runs alone
-// until a core is lent (it asks at the start of every `probe_every` updates), then keeps it.
+// until a core is lent (it asks at the start of every `probe_every` updates), and gives it back
+// when one thread alone was the faster in the probe or the lender stopped waiting.
 enum class TeamCores { own, borrowed };
 
 class ParallelCnmpStep {

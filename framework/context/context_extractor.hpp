@@ -30,7 +30,9 @@ class ContextExtractor {
   // demonstrations, never evaluation trials).
   virtual void fit(const std::vector<Demonstration>& demos, const ExtractorCache& cache,
                    Rng& rng) = 0;
-  // The context of `segment`; empty for segments that have none.
+  // The context of `segment`; empty for segments that have none (the evaluation asks only for
+  // those segments() lists, one call at a time, in trial order:
+  // experiment/environment_evaluation.hpp).
   virtual Eigen::VectorXd extract(const std::string& segment, const Observation& observation) = 0;
   // The segments it gives a context for.
   virtual std::vector<std::string> segments() const = 0;

@@ -84,7 +84,9 @@ void set_thread_budget(int n) {
 int thread_budget() { return g_budget.load(); }
 
 namespace {
-std::atomic<int> g_spare{0};  // waiting threads whose core no one borrowed
+// Waiting threads whose core no one borrowed, less the borrowed cores whose lender stopped
+// waiting.
+std::atomic<int> g_spare{0};
 }  // namespace
 
 SpareThread::SpareThread() { ++g_spare; }
@@ -98,6 +100,13 @@ bool borrow_spare_thread() {
 }
 
 void return_spare_thread() { ++g_spare; }
+
+bool spare_thread_recalled() {
+  int spare = g_spare.load();
+  while (spare < 0 && !g_spare.compare_exchange_weak(spare, spare + 1)) {
+  }
+  return spare < 0;
+}
 
 int parallel_workers(int count) {
   if (count <= 0) return 0;

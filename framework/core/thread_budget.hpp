@@ -64,7 +64,9 @@ void parallel_for_with_workers(int count, int max_workers,
 // Threads of the budget that wait for others' work: a loop's worker that found no task left
 // (until the loop's last task ends), and the pipeline's thread waiting for the networks that
 // read no context (experiment/policy_fitting.cpp). While one waits, a task that can share its
-// work (a CNMP's updates, cnmp/parallel_cnmp_step.hpp) may borrow its core for a second thread.
+// work (a CNMP's updates, cnmp/parallel_cnmp_step.hpp) may borrow its core for a second thread;
+// the borrower checks now and then whether the lender stopped waiting
+// (spare_thread_recalled), and then gives the core back.
 class SpareThread {
  public:
   SpareThread();
@@ -77,5 +79,8 @@ class SpareThread {
 // return_spare_thread(); a borrowed core is not lent twice.
 bool borrow_spare_thread();
 void return_spare_thread();
+// True when a thread whose core was borrowed stopped waiting: the caller, a borrower, has then
+// given its core back (as return_spare_thread) and must run alone.
+bool spare_thread_recalled();
 
 }  // namespace corrmp

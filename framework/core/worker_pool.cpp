@@ -30,10 +30,17 @@ bool spin_until(Done&& done) {
 WorkerPool::WorkerPool(int size) : errors_(static_cast<size_t>(size < 1 ? 1 : size)) {
   if (size < 1) throw std::invalid_argument("WorkerPool: size must be >= 1");
   threads_.reserve(static_cast<size_t>(size - 1));
-  for (int i = 1; i < size; ++i) threads_.emplace_back([this, i] { worker_loop(i); });
+  try {
+    for (int i = 1; i < size; ++i) threads_.emplace_back([this, i] { worker_loop(i); });
+  } catch (...) {
+    stop();  // the threads started (a std::system_error: no more threads to be had)
+    throw;
+  }
 }
 
-WorkerPool::~WorkerPool() {
+WorkerPool::~WorkerPool() { stop(); }
+
+void WorkerPool::stop() {
   {
     std::lock_guard<std::mutex> lock(mutex_);
     stopping_ = true;

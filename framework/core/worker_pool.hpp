@@ -46,6 +46,8 @@ class WorkerPool {
   using Call = void (*)(void*, int);
   void run_erased(void* context, Call call);
   void worker_loop(int index);
+  // Tells the workers to stop and joins them.
+  void stop();
 
   std::vector<std::thread> threads_;
   std::vector<std::exception_ptr> errors_;  // one per index

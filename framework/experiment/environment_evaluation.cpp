@@ -8,6 +8,7 @@
 #include <algorithm>
 #include <cmath>
 #include <condition_variable>
+#include <limits>
 #include <mutex>
 
 #include "core/interrupt.hpp"
@@ -21,6 +22,12 @@ namespace corrmp {
 namespace {
 
 using SegmentPaths = std::map<std::string, Eigen::MatrixXd>;
+
+// Thrown to a trial waiting for its extraction turn when an error left the task of an earlier
+// trial: the loop may skip trials it had taken, whose turns would then never come.
+struct EvaluationAbandoned : std::runtime_error {
+  EvaluationAbandoned() : std::runtime_error("the evaluation stopped") {}
+};
 
 // Trials run concurrently, each in its own environment (Environment::clone), while the policy
 // and the context extractor are shared: the policy generates one trajectory at a time, and the
@@ -43,10 +50,20 @@ class SharedModels {
 
   // Trial `trial`'s context of `segment`, after every extraction of the trials before it.
   Eigen::VectorXd extract(int trial, const std::string& segment, const Observation& observation) {
-    if (extractor_ == nullptr) return Eigen::VectorXd();
     std::unique_lock<std::mutex> lock(turn_mutex_);
-    turn_changed_.wait(lock, [&] { return next_ == trial; });
+    turn_changed_.wait(lock, [&] { return next_ == trial || trial > failed_; });
+    if (next_ != trial) throw EvaluationAbandoned();
     return extractor_->extract(segment, observation);
+  }
+
+  // An error left trial `trial`'s task: the trials after it that wait for their turn throw
+  // EvaluationAbandoned (never the error the loop reports, which is of a lower trial).
+  void abandon_after(int trial) {
+    {
+      const std::lock_guard<std::mutex> lock(turn_mutex_);
+      failed_ = std::min(failed_, trial);
+    }
+    turn_changed_.notify_all();
   }
 
   // Trial `trial` makes no further extraction: the next trial may start its own.
@@ -66,8 +83,9 @@ class SharedModels {
   std::mutex policy_mutex_;
   std::mutex turn_mutex_;
   std::condition_variable turn_changed_;
-  std::vector<bool> extracted_;  // per trial: made its last extraction
-  int next_ = 0;                 // the lowest trial that may still extract
+  std::vector<bool> extracted_;                   // per trial: made its last extraction
+  int next_ = 0;                                  // the lowest trial that may still extract
+  int failed_ = std::numeric_limits<int>::max();  // the lowest trial an error left
 };
 
 // Marks a trial done extracting when it has made its last extraction, or when it ends.
@@ -155,9 +173,23 @@ struct TrialSetting {
   DemonstrationSource& expert;
   SharedModels& models;
   std::vector<std::string> policy_segments;
+  // Per policy segment: whether the extractor gives it a context (ContextExtractor::segments;
+  // it is asked for no other).
+  std::vector<bool> has_context;
   bool images = false;  // the extractor reads camera images
   TaskReport task;
 };
+
+TrialSetting trial_setting(DemonstrationSource& expert, SharedModels& models, const Policy& policy,
+                           const ContextExtractor* extractor, const TaskReport& task) {
+  TrialSetting setting{expert, models, policy.segments(), {}, false, task};
+  const std::vector<std::string> listed =
+      extractor != nullptr ? extractor->segments() : std::vector<std::string>{};
+  for (const std::string& segment : setting.policy_segments)
+    setting.has_context.push_back(std::find(listed.begin(), listed.end(), segment) != listed.end());
+  setting.images = extractor != nullptr && extractor->needs_images();
+  return setting;
+}
 
 // Runs one trial in `environment`: the expert's reference, then the policy segment by segment.
 EvaluatedTrial run_trial(int index, const Scenario& scenario, Environment& environment,
@@ -178,11 +210,15 @@ EvaluatedTrial run_trial(int index, const Scenario& scenario, Environment& envir
 
   environment.reset(scenario);
   std::string failure;
+  const auto& has_context = setting.has_context;
+  const size_t last_context = static_cast<size_t>(
+      std::find(has_context.rbegin(), has_context.rend(), true).base() - has_context.begin());
   for (size_t k = 0; k < setting.policy_segments.size(); ++k) {
     const std::string& segment = setting.policy_segments[k];
     const Observation observation = environment.observe(setting.images);
-    const Eigen::VectorXd context = setting.models.extract(index, segment, observation);
-    if (k + 1 == setting.policy_segments.size()) turn.done();
+    const Eigen::VectorXd context =
+        has_context[k] ? setting.models.extract(index, segment, observation) : Eigen::VectorXd();
+    if (k + 1 >= last_context) turn.done();
     if (context.size() > 0) trial.contexts[segment] = context;
     const SegmentInfo* info = find_segment(env_segments, segment);
     const Eigen::RowVectorXd start_row = environment.segment_start(segment);
@@ -234,8 +270,7 @@ EnvironmentEvaluation evaluate_in_environment(Environment& environment, Demonstr
     scenarios.push_back(environment.sample_scenario(rng));
 
   SharedModels models(policy, extractor, trials);
-  const TrialSetting setting{expert, models, policy.segments(),
-                             extractor != nullptr && extractor->needs_images(), task};
+  const TrialSetting setting = trial_setting(expert, models, policy, extractor, task);
   std::vector<TrialRun> runs(static_cast<size_t>(std::max(trials, 0)));
   EnvironmentCopies environments(environment, parallel_workers(trials));
   Progress progress("evaluation", trials);
@@ -245,21 +280,28 @@ EnvironmentEvaluation evaluate_in_environment(Environment& environment, Demonstr
     const Scenario& scenario = scenarios[static_cast<size_t>(index)];
     TrialRun& run = runs[static_cast<size_t>(index)];
     try {
-      run.trial = run_trial(index, scenario, environments[worker], setting, run.reference);
-    } catch (const Interrupted&) {
+      try {
+        run.trial = run_trial(index, scenario, environments[worker], setting, run.reference);
+      } catch (const Interrupted&) {
+        throw;
+      } catch (const EvaluationAbandoned&) {
+        throw;
+      } catch (const std::exception& e) {
+        // One trial that cannot run is a failed trial with its reason, not a failed run.
+        spdlog::warn("trial {} ({}): {}", index, scenario_json(scenario), e.what());
+        run.trial = EvaluatedTrial{};
+        run.trial.trial = index;
+        run.trial.scenario = scenario;
+        run.trial.failure = std::string("error: ") + e.what();
+      }
+      const std::lock_guard<std::mutex> lock(progress_mutex);
+      successes += run.trial.success;
+      ++finished;
+      progress.advance(1, fmt::format("{} of {} succeeded", successes, finished));
+    } catch (...) {
+      models.abandon_after(index);
       throw;
-    } catch (const std::exception& e) {
-      // One trial that cannot run is a failed trial with its reason, not a failed run.
-      spdlog::warn("trial {} ({}): {}", index, scenario_json(scenario), e.what());
-      run.trial = EvaluatedTrial{};
-      run.trial.trial = index;
-      run.trial.scenario = scenario;
-      run.trial.failure = std::string("error: ") + e.what();
     }
-    const std::lock_guard<std::mutex> lock(progress_mutex);
-    successes += run.trial.success;
-    ++finished;
-    progress.advance(1, fmt::format("{} of {} succeeded", successes, finished));
   });
   progress.finish(fmt::format("{} of {} succeeded", successes, trials));
 

@@ -183,6 +183,15 @@ TEST_F(ThreadBudget, AWaitingThreadsCoreIsLentToOneBorrowerAtATime) {
     return_spare_thread();
   }
   EXPECT_FALSE(borrow_spare_thread());
+  // A lender that stops waiting recalls its core from the borrower, once.
+  {
+    const SpareThread waiting;
+    EXPECT_TRUE(borrow_spare_thread());
+    EXPECT_FALSE(spare_thread_recalled());
+  }
+  EXPECT_TRUE(spare_thread_recalled());
+  EXPECT_FALSE(spare_thread_recalled());
+  EXPECT_FALSE(borrow_spare_thread());
 }
 
 // A loop's worker that found no task left lends its core to the tasks still running, until the

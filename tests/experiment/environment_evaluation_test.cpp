@@ -281,6 +281,7 @@ TEST(EnvironmentEvaluation, TrialsOnTwoThreadsGiveTheResultsOfOne) {
     EXPECT_EQ(two.trials[t].success, one.trials[t].success);
     EXPECT_EQ(two.trials[t].chosen_action, one.trials[t].chosen_action);
     EXPECT_EQ(two.trials[t].details, one.trials[t].details);  // contexts and outcome values
+    ASSERT_EQ(two.evaluated[t].generated.size(), one.evaluated[t].generated.size());
     for (const auto& [segment, path] : one.evaluated[t].generated)
       EXPECT_EQ(two.evaluated[t].generated.at(segment), path) << segment;
   }
@@ -296,11 +297,17 @@ TEST(EnvironmentEvaluation, TrialsOnTwoThreadsGiveTheResultsOfOne) {
 // trial running beside it would extract before the first trial's second extraction.
 class SlowLineTask : public LineTask {
  public:
-  std::unique_ptr<Environment> clone() const override { return std::make_unique<SlowLineTask>(); }
+  std::unique_ptr<Environment> clone() const override {
+    auto copy = std::make_unique<SlowLineTask>();
+    copy->failing_trial_ = failing_trial_;
+    return copy;
+  }
   void reset(const Scenario& scenario) override {
+    if (scenario.at("index") == failing_trial_) throw std::runtime_error("cannot reset");
     LineTask::reset(scenario);
     first_trial_ = scenario.at("index") == 0.0;
   }
+  double failing_trial_ = -1.0;  // clones reset every trial
   Scenario sample_scenario(Rng&) const override { return {{"throw", 1.0}, {"index", drawn_++}}; }
   std::string execute(const std::string& segment, const Eigen::MatrixXd& rows) override {
     if (first_trial_ && segment == "move")
@@ -318,8 +325,10 @@ class CountingExtractor : public ContextExtractor {
  public:
   void fit(const std::vector<Demonstration>&, const ExtractorCache&, Rng&) override {}
   Eigen::VectorXd extract(const std::string&, const Observation&) override {
+    if (calls_ == throw_at_) throw 42;  // not a std::exception: it leaves the trial's task
     return Eigen::VectorXd::Constant(1, calls_++);
   }
+  int throw_at_ = -1;
   std::vector<std::string> segments() const override { return {"move", "nudge"}; }
   bool needs_images() const override { return false; }
 
@@ -344,6 +353,41 @@ TEST(EnvironmentEvaluation, TheExtractorIsCalledInTrialOrderWhateverTheThreads) 
       EXPECT_EQ(trial.contexts.at("nudge")(0), 2 * t + 1) << "budget " << budget << ", trial " << t;
       EXPECT_TRUE(trial.success) << trial.failure;
     }
+  }
+}
+
+// A trial that fails in its own environment is a failed trial; the trials after it still take
+// their turns.
+TEST(EnvironmentEvaluation, AFailedTrialPassesItsTurnOn) {
+  for (const int budget : {1, 2}) {
+    const BudgetForScope scope(budget);
+    SlowLineTask task;
+    task.failing_trial_ = 1;
+    LineExpert expert;
+    LinePolicy policy;
+    CountingExtractor extractor;
+    Rng rng(3);
+    const EnvironmentEvaluation result =
+        evaluate_in_environment(task, expert, &extractor, policy, 4, rng, "line");
+    ASSERT_EQ(result.evaluated.size(), 4u);
+    EXPECT_EQ(result.evaluated[1].failure, "error: cannot reset");
+    EXPECT_EQ(result.evaluated[2].contexts.at("move")(0), 2) << "budget " << budget;
+    EXPECT_EQ(result.evaluated[3].contexts.at("nudge")(0), 5) << "budget " << budget;
+  }
+}
+
+// An error that is no std::exception leaves the evaluation (no trial hangs waiting for its turn).
+TEST(EnvironmentEvaluation, AnErrorLeavingATrialStopsTheEvaluation) {
+  for (const int budget : {1, 2}) {
+    const BudgetForScope scope(budget);
+    SlowLineTask task;
+    LineExpert expert;
+    LinePolicy policy;
+    CountingExtractor extractor;
+    extractor.throw_at_ = 2;  // trial 1's first extraction
+    Rng rng(3);
+    EXPECT_THROW(evaluate_in_environment(task, expert, &extractor, policy, 6, rng, "line"), int)
+        << "budget " << budget;
   }
 }
 
