@@ -336,16 +336,24 @@ class CountingExtractor : public ContextExtractor {
   int calls_ = 0;
 };
 
+// `trials` trials of the slow line task on `budget` threads, given the counting extractor's
+// contexts; `failing_trial` cannot reset, and the extractor throws at call `throw_at`.
+EnvironmentEvaluation evaluate_line(int budget, int trials, double failing_trial = -1.0,
+                                    int throw_at = -1) {
+  const BudgetForScope scope(budget);
+  SlowLineTask task;
+  task.failing_trial_ = failing_trial;
+  LineExpert expert;
+  LinePolicy policy;
+  CountingExtractor extractor;
+  extractor.throw_at_ = throw_at;
+  Rng rng(3);
+  return evaluate_in_environment(task, expert, &extractor, policy, trials, rng, "line");
+}
+
 TEST(EnvironmentEvaluation, TheExtractorIsCalledInTrialOrderWhateverTheThreads) {
   for (const int budget : {1, 2}) {
-    const BudgetForScope scope(budget);
-    SlowLineTask task;
-    LineExpert expert;
-    LinePolicy policy;
-    CountingExtractor extractor;
-    Rng rng(3);
-    const EnvironmentEvaluation result =
-        evaluate_in_environment(task, expert, &extractor, policy, 4, rng, "line");
+    const EnvironmentEvaluation result = evaluate_line(budget, 4);
     ASSERT_EQ(result.evaluated.size(), 4u);
     for (int t = 0; t < 4; ++t) {
       const EvaluatedTrial& trial = result.evaluated[static_cast<size_t>(t)];
@@ -360,15 +368,7 @@ TEST(EnvironmentEvaluation, TheExtractorIsCalledInTrialOrderWhateverTheThreads) 
 // their turns.
 TEST(EnvironmentEvaluation, AFailedTrialPassesItsTurnOn) {
   for (const int budget : {1, 2}) {
-    const BudgetForScope scope(budget);
-    SlowLineTask task;
-    task.failing_trial_ = 1;
-    LineExpert expert;
-    LinePolicy policy;
-    CountingExtractor extractor;
-    Rng rng(3);
-    const EnvironmentEvaluation result =
-        evaluate_in_environment(task, expert, &extractor, policy, 4, rng, "line");
+    const EnvironmentEvaluation result = evaluate_line(budget, 4, /*failing_trial=*/1);
     ASSERT_EQ(result.evaluated.size(), 4u);
     EXPECT_EQ(result.evaluated[1].failure, "error: cannot reset");
     EXPECT_EQ(result.evaluated[2].contexts.at("move")(0), 2) << "budget " << budget;
@@ -379,15 +379,8 @@ TEST(EnvironmentEvaluation, AFailedTrialPassesItsTurnOn) {
 // An error that is no std::exception leaves the evaluation (no trial hangs waiting for its turn).
 TEST(EnvironmentEvaluation, AnErrorLeavingATrialStopsTheEvaluation) {
   for (const int budget : {1, 2}) {
-    const BudgetForScope scope(budget);
-    SlowLineTask task;
-    LineExpert expert;
-    LinePolicy policy;
-    CountingExtractor extractor;
-    extractor.throw_at_ = 2;  // trial 1's first extraction
-    Rng rng(3);
-    EXPECT_THROW(evaluate_in_environment(task, expert, &extractor, policy, 6, rng, "line"), int)
-        << "budget " << budget;
+    // The extractor throws at trial 1's first extraction.
+    EXPECT_THROW(evaluate_line(budget, 6, -1.0, /*throw_at=*/2), int) << "budget " << budget;
   }
 }
 
