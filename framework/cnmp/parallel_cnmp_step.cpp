@@ -4,13 +4,26 @@
 #include <algorithm>
 #include <chrono>
 #include <cmath>
+#include <memory>
 #include <stdexcept>
+#include <system_error>
 
 #include "core/thread_budget.hpp"
 #include "nn/gemm.hpp"
 
 namespace corrmp {
 namespace {
+
+// The team's workers: one where float products are not split-exact, or where no thread can be
+// started (one thread alone gives the same bits).
+std::unique_ptr<WorkerPool> team_pool(int workers) {
+  const int size = nn::gemm_float_split_exact() ? std::max(workers, 1) : 1;
+  try {
+    return std::make_unique<WorkerPool>(size);
+  } catch (const std::system_error&) {
+    return std::make_unique<WorkerPool>(1);
+  }
+}
 
 // The median of `values` (reordered), or 0 for none.
 double median(std::vector<double>& values) {
@@ -27,8 +40,8 @@ ParallelCnmpStep::ParallelCnmpStep(Cnmp<float>& network, double learning_rate, i
     : network_(network),
       params_(network.parameters()),
       adam_(params_, nn::AdamOptions{learning_rate}),
-      pool_(nn::gemm_float_split_exact() ? std::max(workers, 1) : 1),
-      barrier_(pool_.size()),
+      pool_(team_pool(workers)),
+      barrier_(pool_->size()),
       blocks_(nn::Adam<float>::ranges(params_, nn::Adam<float>::kRangeAlignment)),
       probe_every_(std::max<int64_t>(probe_every, 1)),
       probe_updates_(std::max<int64_t>(probe_updates, 0)),
@@ -48,12 +61,12 @@ void ParallelCnmpStep::update(size_t first, size_t last) {
 }
 
 float ParallelCnmpStep::step(const BatchSampler& sampler) {
-  if (pool_.size() == 1) return step_alone(sampler);
+  if (pool_->size() == 1) return step_alone(sampler);
   const int64_t phase = updates_++ % probe_every_;
+  if (borrowed_ && spare_thread_recalled()) borrowed_ = false;  // the lender stopped waiting
   if (phase == 0) {
     team_seconds_.clear();
     alone_seconds_.clear();
-    if (borrowed_ && spare_thread_recalled()) borrowed_ = false;
     if (cores_ == TeamCores::borrowed && !borrowed_) borrowed_ = borrow_spare_thread();
   }
   if (cores_ == TeamCores::borrowed && !borrowed_) return step_alone(sampler);
@@ -88,11 +101,11 @@ float ParallelCnmpStep::step_as_team(const BatchSampler& sampler) {
   ++team_updates_;
   network_.prepare_step(sampler.observations(), sampler.contexts(), sampler.target_x(),
                         sampler.counts());
-  const size_t blocks = blocks_.size(), members = static_cast<size_t>(pool_.size());
+  const size_t blocks = blocks_.size(), members = static_cast<size_t>(pool_->size());
   float loss = 0.0f;
   barrier_.reset();
-  pool_.run([&](int member) {
-    const nn::Team team{member, pool_.size(), &barrier_};
+  pool_->run([&](int member) {
+    const nn::Team team{member, pool_->size(), &barrier_};
     try {
       // Returns once every member has finished the backward pass: all gradients are complete.
       const float batch_loss = network_.train_step_part(sampler.target_y(), sampler.counts(), team);

@@ -23,6 +23,7 @@
 
 #include <cstddef>
 #include <cstdint>
+#include <memory>
 #include <vector>
 
 #include "cnmp/batch_sampler.hpp"
@@ -35,7 +36,7 @@ namespace corrmp {
 // Whether the team's second thread has a core of its own, or borrows one a thread that waits
 // for others' work lends (core/thread_budget.hpp: SpareThread). A borrowing update runs alone
 // until a core is lent (it asks at the start of every `probe_every` updates), and gives it back
-// when one thread alone was the faster in the probe or the lender stopped waiting.
+// when one thread alone was the faster in the probe, or at once when the lender stops waiting.
 enum class TeamCores { own, borrowed };
 
 class ParallelCnmpStep {
@@ -58,7 +59,7 @@ class ParallelCnmpStep {
   // between updates.
   float step(const BatchSampler& sampler);
 
-  int workers() const { return pool_.size(); }
+  int workers() const { return pool_->size(); }
   // How many updates ran on the team so far.
   int64_t team_updates() const { return team_updates_; }
 
@@ -74,7 +75,7 @@ class ParallelCnmpStep {
   Cnmp<float>& network_;
   std::vector<nn::Parameter<float>> params_;
   nn::Adam<float> adam_;
-  WorkerPool pool_;
+  std::unique_ptr<WorkerPool> pool_;
   nn::SpinBarrier barrier_;
   std::vector<nn::Adam<float>::Range> blocks_;  // every parameter entry, in parameter order
 

@@ -76,7 +76,8 @@ class SpareThread {
 };
 
 // Takes one waiting thread's core if there is one (true), to give back with
-// return_spare_thread(); a borrowed core is not lent twice.
+// return_spare_thread(). A borrowed core is not lent twice while its lender waits; once the
+// lender stops, its borrower must notice (spare_thread_recalled) before the count is right.
 bool borrow_spare_thread();
 void return_spare_thread();
 // True when a thread whose core was borrowed stopped waiting: the caller, a borrower, has then

@@ -7,7 +7,9 @@
 
 #include <cmath>
 #include <cstring>
+#include <functional>
 #include <limits>
+#include <memory>
 
 #include "core/thread_budget.hpp"
 #include "nn/gemm.hpp"
@@ -36,9 +38,10 @@ struct Trained {
   std::vector<Eigen::VectorXf> weights;
 };
 
+// `before(u)`, when given, runs before update u.
 Trained train(const CnmpArchitecture& a, int workers, int updates, int64_t probe_every = 4000,
               int64_t probe_updates = 100, int64_t* team_updates = nullptr,
-              TeamCores cores = TeamCores::own) {
+              TeamCores cores = TeamCores::own, const std::function<void(int)>& before = {}) {
   CnmpModel model(a, 3);
   const auto data = waves(a, 12, 40);
   CnmpTrainingParams params;
@@ -51,6 +54,7 @@ Trained train(const CnmpArchitecture& a, int workers, int updates, int64_t probe
   Rng rng(11);
   Trained out;
   for (int u = 0; u < updates; ++u) {
+    if (before) before(u);
     sampler.draw(rng);
     out.losses.push_back(updater.step(sampler));
   }
@@ -135,6 +139,21 @@ TEST(ParallelCnmpStep, ABorrowingTeamRunsOnlyOnALentCore) {
     return_spare_thread();
   }
   EXPECT_FALSE(borrow_spare_thread());
+}
+
+// When the lender stops waiting, the team gives its core back at the next update.
+TEST(ParallelCnmpStep, ABorrowedCoreIsGivenBackWhenItsLenderStopsWaiting) {
+  SKIP_UNLESS_SPLIT_EXACT();
+  const CnmpArchitecture a = architecture(64, 1);
+  const Trained one = train(a, 1, 20);
+  auto waiting = std::make_unique<SpareThread>();
+  int64_t team_updates = -1;
+  const Trained lent = train(a, 2, 20, 1000, 0, &team_updates, TeamCores::borrowed, [&](int u) {
+    if (u == 8) waiting.reset();
+  });
+  expect_identical(one, lent);
+  EXPECT_EQ(team_updates, 8);
+  EXPECT_FALSE(borrow_spare_thread());  // the count is back to none
 }
 
 // A batch whose loss is NaN (one NaN target) leaves the weights as the previous update left

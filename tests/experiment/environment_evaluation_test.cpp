@@ -329,8 +329,9 @@ class CountingExtractor : public ContextExtractor {
     return Eigen::VectorXd::Constant(1, calls_++);
   }
   int throw_at_ = -1;
-  std::vector<std::string> segments() const override { return {"move", "nudge"}; }
+  std::vector<std::string> segments() const override { return segments_; }
   bool needs_images() const override { return false; }
+  std::vector<std::string> segments_{"move", "nudge"};
 
  private:
   int calls_ = 0;
@@ -339,7 +340,8 @@ class CountingExtractor : public ContextExtractor {
 // `trials` trials of the slow line task on `budget` threads, given the counting extractor's
 // contexts; `failing_trial` cannot reset, and the extractor throws at call `throw_at`.
 EnvironmentEvaluation evaluate_line(int budget, int trials, double failing_trial = -1.0,
-                                    int throw_at = -1) {
+                                    int throw_at = -1,
+                                    std::vector<std::string> segments = {"move", "nudge"}) {
   const BudgetForScope scope(budget);
   SlowLineTask task;
   task.failing_trial_ = failing_trial;
@@ -347,6 +349,7 @@ EnvironmentEvaluation evaluate_line(int budget, int trials, double failing_trial
   LinePolicy policy;
   CountingExtractor extractor;
   extractor.throw_at_ = throw_at;
+  extractor.segments_ = std::move(segments);
   Rng rng(3);
   return evaluate_in_environment(task, expert, &extractor, policy, trials, rng, "line");
 }
@@ -360,6 +363,19 @@ TEST(EnvironmentEvaluation, TheExtractorIsCalledInTrialOrderWhateverTheThreads) 
       EXPECT_EQ(trial.contexts.at("move")(0), 2 * t) << "budget " << budget << ", trial " << t;
       EXPECT_EQ(trial.contexts.at("nudge")(0), 2 * t + 1) << "budget " << budget << ", trial " << t;
       EXPECT_TRUE(trial.success) << trial.failure;
+    }
+  }
+}
+
+// The extractor is asked only for the segments it lists.
+TEST(EnvironmentEvaluation, TheExtractorIsAskedOnlyForItsSegments) {
+  for (const int budget : {1, 2}) {
+    const EnvironmentEvaluation result = evaluate_line(budget, 4, -1.0, -1, {"nudge"});
+    ASSERT_EQ(result.evaluated.size(), 4u);
+    for (int t = 0; t < 4; ++t) {
+      const EvaluatedTrial& trial = result.evaluated[static_cast<size_t>(t)];
+      EXPECT_EQ(trial.contexts.count("move"), 0u);
+      EXPECT_EQ(trial.contexts.at("nudge")(0), t) << "budget " << budget << ", trial " << t;
     }
   }
 }
