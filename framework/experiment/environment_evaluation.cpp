@@ -334,7 +334,7 @@ EnvironmentEvaluation evaluate_in_environment(Environment& environment, Demonstr
   for (const auto& [segment, accumulator] : errors) segment_errors[segment] = accumulator.result();
   // The policy decides when it generates the decision segment, or the whole skill.
   const std::vector<SegmentInfo> env_segments = environment.segments();
-  const auto segments = policy.segments();
+  const std::vector<std::string>& segments = setting.policy_segments;
   const bool decides =
       !task.decision_labels.empty() &&
       std::any_of(segments.begin(), segments.end(), [&](const std::string& s) {
