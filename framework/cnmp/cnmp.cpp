@@ -4,6 +4,9 @@
 #include <fmt/format.h>
 
 #include <stdexcept>
+#include <utility>
+
+#include "nn/relu_fusion.hpp"
 
 namespace corrmp {
 
@@ -15,11 +18,19 @@ std::vector<nn::Index> encoder_sizes(const CnmpArchitecture& a) {
   return sizes;
 }
 
-std::vector<nn::Index> decoder_sizes(const CnmpArchitecture& a) {
-  std::vector<nn::Index> sizes{a.width + a.d_context + a.d_x};
-  for (int i = 1; i < a.decoder_layers; ++i) sizes.push_back(a.width);
+// The decoder's first layer's outputs.
+nn::Index first_layer_outputs(const CnmpArchitecture& a) {
+  return a.decoder_layers > 1 ? a.width : 2 * a.d_y;
+}
+
+// The decoder's layers after the first (width -> ... -> 2 d_y), drawn from rng after it.
+template <class S>
+std::optional<nn::Mlp<S>> decoder_rest(const CnmpArchitecture& a, nn::Rng& rng) {
+  if (a.decoder_layers < 2) return std::nullopt;
+  std::vector<nn::Index> sizes{a.width};
+  for (int i = 2; i < a.decoder_layers; ++i) sizes.push_back(a.width);
   sizes.push_back(2 * a.d_y);
-  return sizes;
+  return nn::Mlp<S>(sizes, rng);
 }
 
 }  // namespace
@@ -28,97 +39,112 @@ template <class S>
 Cnmp<S>::Cnmp(const CnmpArchitecture& architecture, nn::Rng& rng)
     : architecture_(architecture),
       encoder_(encoder_sizes(architecture), rng),
-      decoder_(decoder_sizes(architecture), rng),
+      decoder_first_(architecture.width, architecture.d_context + architecture.d_x,
+                     first_layer_outputs(architecture), rng),
+      decoder_rest_(decoder_rest<S>(architecture, rng)),
       loss_(architecture.min_std) {}
 
 template <class S>
-void Cnmp<S>::fill_decoder_input(nn::MatRef<S> input, nn::ConstMatRef<S> contexts,
-                                 nn::ConstMatRef<S> target_x,
-                                 const std::vector<int>& target_counts) const {
+nn::MatMap<S> Cnmp<S>::first_layer_output() {
+  return decoder_rest_ ? decoder_rest_->input() : one_layer_output_.view();
+}
+
+template <class S>
+nn::ConstMatMap<S> Cnmp<S>::output() const {
+  return decoder_rest_ ? decoder_rest_->output() : one_layer_output_.view();
+}
+
+template <class S>
+void Cnmp<S>::fill_queries(nn::ConstMatRef<S> contexts, nn::ConstMatRef<S> target_x,
+                           const std::vector<int>& target_counts) {
   const auto& a = architecture_;
+  auto queries = queries_.resize(target_x.rows(), a.d_context + a.d_x);
   nn::Index target_row = 0;
   for (size_t b = 0; b < target_counts.size(); ++b) {
     const int m = target_counts[b];
-    if (a.d_context > 0) {
-      input.block(target_row, a.width, m, a.d_context).rowwise() = contexts.row(b);
-    }
+    if (a.d_context > 0) queries.block(target_row, 0, m, a.d_context).rowwise() = contexts.row(b);
     target_row += m;
   }
-  input.rightCols(a.d_x) = target_x;
+  queries.rightCols(a.d_x) = target_x;
 }
 
 template <class S>
-void Cnmp<S>::average_encodings(nn::MatRef<S> input, const std::vector<int>& observation_counts,
-                                const std::vector<int>& target_counts) {
-  const auto& a = architecture_;
+void Cnmp<S>::average_encodings(const std::vector<int>& observation_counts) {
   const auto encoded = encoder_.output();
   auto r = representation_.view();
-  nn::Index obs_row = 0, target_row = 0;
+  nn::Index obs_row = 0;
   for (size_t b = 0; b < observation_counts.size(); ++b) {
-    const int n = observation_counts[b], m = target_counts[b];
-    const auto task = static_cast<nn::Index>(b);
-    r.row(task) = encoded.middleRows(obs_row, n).colwise().sum() / static_cast<S>(n);
-    input.block(target_row, 0, m, a.width).rowwise() = r.row(task);
+    const int n = observation_counts[b];
+    r.row(static_cast<nn::Index>(b)) =
+        encoded.middleRows(obs_row, n).colwise().sum() / static_cast<S>(n);
     obs_row += n;
-    target_row += m;
   }
 }
 
 template <class S>
-void Cnmp<S>::spread_representation_grad(nn::ConstMatRef<S> d_input,
-                                         const CnmpBatchCounts& counts) {
-  auto d_encoded = d_encoded_.view();
-  nn::Index obs_row = 0, target_row = 0;
+void Cnmp<S>::spread_representation_grad(const CnmpBatchCounts& counts, nn::Index first,
+                                         nn::Index count) {
+  if (count == 0) return;
+  const auto d_r = std::as_const(d_representation_).view().middleCols(first, count);
+  auto d_encoded = d_encoded_.view().middleCols(first, count);
+  nn::Index obs_row = 0;
   for (size_t b = 0; b < counts.observations.size(); ++b) {
-    const int n = counts.observations[b], m = counts.targets[b];
+    const int n = counts.observations[b];
     // r_b is the mean of n encodings: each receives 1/n of dL/dr_b.
     d_encoded.middleRows(obs_row, n).rowwise() =
-        d_input.block(target_row, 0, m, architecture_.width).colwise().sum() / static_cast<S>(n);
+        d_r.row(static_cast<nn::Index>(b)) / static_cast<S>(n);
     obs_row += n;
-    target_row += m;
   }
 }
 
 template <class S>
-void Cnmp<S>::forward(nn::ConstMatRef<S> observations, nn::ConstMatRef<S> contexts,
-                      nn::ConstMatRef<S> target_x, const std::vector<int>& observation_counts,
-                      const std::vector<int>& target_counts) {
-  const auto& a = architecture_;
-  encoder_.forward(observations);
-  representation_.resize(static_cast<nn::Index>(observation_counts.size()), a.width);
-  auto input = decoder_input_.resize(target_x.rows(), a.width + a.d_context + a.d_x);
-  fill_decoder_input(input, contexts, target_x, target_counts);
-  average_encodings(input, observation_counts, target_counts);
-  decoder_.forward(input);
+void Cnmp<S>::prepare_forward(nn::ConstMatRef<S> observations, nn::ConstMatRef<S> contexts,
+                              nn::ConstMatRef<S> target_x, const CnmpBatchCounts& counts) {
+  const auto tasks = static_cast<nn::Index>(counts.observations.size());
+  encoder_.prepare(observations.rows());
+  encoder_.input() = observations;
+  representation_.resize(tasks, architecture_.width);
+  fill_queries(contexts, target_x, counts.targets);
+  decoder_first_.prepare(tasks);
+  if (decoder_rest_)
+    decoder_rest_->prepare(target_x.rows());
+  else
+    one_layer_output_.resize(target_x.rows(), 2 * architecture_.d_y);
+}
+
+template <class S>
+void Cnmp<S>::forward_part(const CnmpBatchCounts& counts, const nn::Team& team) {
+  encoder_.forward_part(team);
+  // The column sums over observations run on member 0 alone, as whole-width Eigen expressions:
+  // Eigen's summation order depends on where a block starts in memory, so cutting them would
+  // change the last bits.
+  if (team.member == 0) average_encodings(counts.observations);
+  team.sync();
+  const auto [first, count] = team.share(decoder_first_.out_features());
+  auto z = first_layer_output();
+  decoder_first_.forward_part(representation_.view(), queries_.view(), counts.targets, z, first,
+                              count);
+  if (decoder_rest_ && count > 0) nn::relu_in_place(z.middleCols(first, count));
+  team.sync();
+  if (decoder_rest_) decoder_rest_->forward_part(team);
 }
 
 template <class S>
 S Cnmp<S>::train_step(nn::ConstMatRef<S> observations, nn::ConstMatRef<S> contexts,
                       nn::ConstMatRef<S> target_x, nn::ConstMatRef<S> target_y,
                       const CnmpBatchCounts& counts) {
-  const auto& a = architecture_;
-  forward(observations, contexts, target_x, counts.observations, counts.targets);
-  const auto output = decoder_.output();
-  auto d_output = d_output_.resize(output.rows(), output.cols());
-  const S loss = loss_.value_and_grad(output.leftCols(a.d_y), output.rightCols(a.d_y), target_y,
-                                      d_output.leftCols(a.d_y), d_output.rightCols(a.d_y));
-  const auto d_input = decoder_.backward(d_output);
-  d_encoded_.resize(observations.rows(), a.width);
-  spread_representation_grad(d_input, counts);
-  encoder_.backward_params_only(d_encoded_.view());
-  return loss;
+  prepare_step(observations, contexts, target_x, counts);
+  return train_step_part(target_y, counts, nn::Team{});
 }
 
 template <class S>
 void Cnmp<S>::prepare_step(nn::ConstMatRef<S> observations, nn::ConstMatRef<S> contexts,
                            nn::ConstMatRef<S> target_x, const CnmpBatchCounts& counts) {
   const auto& a = architecture_;
-  encoder_.prepare(observations.rows());
-  encoder_.input() = observations;
-  decoder_.prepare(target_x.rows());
-  fill_decoder_input(decoder_.input(), contexts, target_x, counts.targets);
-  representation_.resize(static_cast<nn::Index>(counts.observations.size()), a.width);
+  prepare_forward(observations, contexts, target_x, counts);
   d_output_.resize(target_x.rows(), 2 * a.d_y);
+  d_first_.resize(target_x.rows(), decoder_first_.out_features());
+  d_representation_.resize(static_cast<nn::Index>(counts.observations.size()), a.width);
   d_encoded_.resize(observations.rows(), a.width);
 }
 
@@ -126,22 +152,33 @@ template <class S>
 S Cnmp<S>::train_step_part(nn::ConstMatRef<S> target_y, const CnmpBatchCounts& counts,
                            const nn::Team& team) {
   const auto& a = architecture_;
-  encoder_.forward_part(team);
-  // The column sums over observations and targets run on member 0 alone, as whole-width Eigen
-  // expressions on the buffers train_step uses: Eigen's summation order depends on where a block
-  // starts in memory, so cutting them would change the last bits.
-  if (team.member == 0) average_encodings(decoder_.input(), counts.observations, counts.targets);
-  team.sync();
-  decoder_.forward_part(team);
+  forward_part(counts, team);
   if (team.member == 0) {
-    const auto output = decoder_.output();
+    const auto out = output();
     auto d_output = d_output_.view();
-    shared_loss_ = loss_.value_and_grad(output.leftCols(a.d_y), output.rightCols(a.d_y), target_y,
+    shared_loss_ = loss_.value_and_grad(out.leftCols(a.d_y), out.rightCols(a.d_y), target_y,
                                         d_output.leftCols(a.d_y), d_output.rightCols(a.d_y));
   }
   team.sync();
-  const auto d_input = decoder_.backward_part(d_output_.view(), true, team);
-  if (team.member == 0) spread_representation_grad(d_input, counts);
+  // g = dL/dz of the first layer: the decoder's output gradient, or the gradient the other
+  // layers pass back through the first layer's ReLU.
+  const auto [first, count] = team.share(decoder_first_.out_features());
+  if (decoder_rest_) {
+    const auto d_input = decoder_rest_->backward_part(d_output_.view(), true, team);
+    const auto z = decoder_rest_->input();
+    auto d_first = d_first_.view();
+    if (count > 0)
+      d_first.middleCols(first, count) = (z.middleCols(first, count).array() > S(0))
+                                             .select(d_input.middleCols(first, count), S(0));
+  }
+  const nn::ConstMatMap<S> g =
+      decoder_rest_ ? std::as_const(d_first_).view() : std::as_const(d_output_).view();
+  decoder_first_.backward_params_part(representation_.view(), queries_.view(), g, counts.targets,
+                                      first, count);
+  team.sync();
+  const auto [r_first, r_count] = team.share(a.width);
+  decoder_first_.representation_grad_part(d_representation_.view(), r_first, r_count);
+  spread_representation_grad(counts, r_first, r_count);
   team.sync();
   encoder_.backward_part(d_encoded_.view(), false, team);
   return shared_loss_;
@@ -164,25 +201,28 @@ void Cnmp<S>::predict(nn::ConstMatRef<S> observations, nn::ConstMatRef<S> contex
     throw std::invalid_argument(
         fmt::format("CNMP queries have {} input values, got {}", a.d_x, query_x.cols()));
   }
-  const std::vector<int> observation_counts{static_cast<int>(observations.rows())};
-  const std::vector<int> target_counts{static_cast<int>(query_x.rows())};
-  forward(observations, context, query_x, observation_counts, target_counts);
-  const auto output = decoder_.output();
-  mean = output.leftCols(a.d_y);
-  std.resize(output.rows(), a.d_y);
-  loss_.std_from_raw(output.rightCols(a.d_y), std);
+  const CnmpBatchCounts counts{{static_cast<int>(observations.rows())},
+                               {static_cast<int>(query_x.rows())}};
+  prepare_forward(observations, context, query_x, counts);
+  forward_part(counts, nn::Team{});
+  const auto out = output();
+  mean = out.leftCols(a.d_y);
+  std.resize(out.rows(), a.d_y);
+  loss_.std_from_raw(out.rightCols(a.d_y), std);
 }
 
 template <class S>
 std::vector<nn::Parameter<S>> Cnmp<S>::parameters() {
   auto params = encoder_.parameters("encoder.");
-  nn::append_parameters(params, decoder_.parameters("decoder."));
+  nn::append_parameters(params, decoder_first_.parameters("decoder.layers.0."));
+  if (decoder_rest_) nn::append_parameters(params, decoder_rest_->parameters("decoder.", 1));
   return params;
 }
 
 template <class S>
 int64_t Cnmp<S>::parameter_count() const {
-  return encoder_.num_parameters() + decoder_.num_parameters();
+  return encoder_.num_parameters() + decoder_first_.num_parameters() +
+         (decoder_rest_ ? decoder_rest_->num_parameters() : 0);
 }
 
 template <class S>

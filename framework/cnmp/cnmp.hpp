@@ -8,21 +8,25 @@
 //   (mu, raw) = D([r, c, x_q]),   sigma = min_std + softplus(raw)
 //   loss = mean over targets and dimensions of -log N(y_q; mu, sigma)
 // Backward: dL/dr_b = sum_j dL/dinput_j[0:w] over the targets j of task b, and
-// each observation row of task b receives dL/dr_b / n_b.
+// each observation row of task b receives dL/dr_b / n_b. The decoder's first layer
+// computes its r_b part once per task (cnmp/decoder_first_layer.hpp).
 //
 // A batch holds B tasks; task b has counts.observations[b] observation rows and
 // counts.targets[b] target rows, stored contiguously in task order. No heap
 // allocation in train_step once the largest batch has been seen.
 #pragma once
 
+#include <optional>
 #include <vector>
 
 #include "cnmp/cnmp_architecture.hpp"
+#include "cnmp/decoder_first_layer.hpp"
 #include "nn/buffer.hpp"
 #include "nn/gaussian_nll.hpp"
 #include "nn/mlp.hpp"
 #include "nn/model_file.hpp"
 #include "nn/parameter.hpp"
+#include "nn/team.hpp"
 
 namespace corrmp {
 
@@ -69,32 +73,38 @@ class Cnmp {
   static CnmpArchitecture architecture_of(const nn::ModelFile& file);
 
  private:
-  // Encodes observations, averages per task and builds the decoder input rows.
-  void forward(nn::ConstMatRef<S> observations, nn::ConstMatRef<S> contexts,
-               nn::ConstMatRef<S> target_x, const std::vector<int>& observation_counts,
-               const std::vector<int>& target_counts);
+  // Shapes the buffers of a forward pass and copies its inputs, on one thread.
+  void prepare_forward(nn::ConstMatRef<S> observations, nn::ConstMatRef<S> contexts,
+                       nn::ConstMatRef<S> target_x, const CnmpBatchCounts& counts);
+  // Encodes the observations, averages them per task and decodes, cut among the team.
+  void forward_part(const CnmpBatchCounts& counts, const nn::Team& team);
 
-  // The context and query columns of the decoder input's rows.
-  void fill_decoder_input(nn::MatRef<S> input, nn::ConstMatRef<S> contexts,
-                          nn::ConstMatRef<S> target_x, const std::vector<int>& target_counts) const;
-  // r_b, the mean of task b's encodings (encoder output), into representation_ (shaped) and the
-  // first columns of its targets' decoder input rows.
-  void average_encodings(nn::MatRef<S> input, const std::vector<int>& observation_counts,
-                         const std::vector<int>& target_counts);
-  // dL/dr_b from the decoder input gradient, spread over task b's encodings into d_encoded_
-  // (shaped).
-  void spread_representation_grad(nn::ConstMatRef<S> d_input, const CnmpBatchCounts& counts);
+  // The context and query of each target row, into queries_.
+  void fill_queries(nn::ConstMatRef<S> contexts, nn::ConstMatRef<S> target_x,
+                    const std::vector<int>& target_counts);
+  // r_b, the mean of task b's encodings (encoder output), into representation_.
+  void average_encodings(const std::vector<int>& observation_counts);
+  // Columns [first, first + count) of dL/dr_b spread over task b's encodings into d_encoded_.
+  void spread_representation_grad(const CnmpBatchCounts& counts, nn::Index first, nn::Index count);
+
+  // The decoder's first layer's output: the input of the layers after it, or the decoder's
+  // output when it has one layer.
+  nn::MatMap<S> first_layer_output();
+  nn::ConstMatMap<S> output() const;
 
   CnmpArchitecture architecture_;
   nn::Mlp<S> encoder_;
-  nn::Mlp<S> decoder_;
+  DecoderFirstLayer<S> decoder_first_;
+  std::optional<nn::Mlp<S>> decoder_rest_;  // the decoder's other layers (none with one layer)
   nn::GaussianNll<S> loss_;
-  nn::Buffer<S> representation_;  // B x width
-  nn::Buffer<S> decoder_input_;   // targets x (width + d_context + d_x)
-  nn::Buffer<S> d_output_;        // targets x 2 d_y
-  nn::Buffer<S> d_encoded_;       // observations x width
-  std::vector<int> predict_counts_{0};
-  S shared_loss_ = S(0);  // train_step_part's loss, written by member 0
+  nn::Buffer<S> representation_;    // tasks x width
+  nn::Buffer<S> queries_;           // targets x (d_context + d_x)
+  nn::Buffer<S> one_layer_output_;  // targets x 2 d_y, for a decoder of one layer
+  nn::Buffer<S> d_output_;          // targets x 2 d_y
+  nn::Buffer<S> d_first_;           // targets x first layer outputs: dL/dz of that layer
+  nn::Buffer<S> d_representation_;  // tasks x width
+  nn::Buffer<S> d_encoded_;         // observations x width
+  S shared_loss_ = S(0);            // train_step_part's loss, written by member 0
 };
 
 extern template class Cnmp<float>;

@@ -250,9 +250,17 @@ void gemm(ConstMatRef<S> a, Op op_a, ConstMatRef<S> b, Op op_b, MatRef<S> c, boo
 
 bool gemm_float_split_exact() { return CORRMP_GEMM_AVX512 != 0; }
 
+template <class S>
+Buffer<S>& gemm_scratch() {
+  thread_local Buffer<S> buffer;
+  return buffer;
+}
+
 template void gemm<float>(ConstMatRef<float>, Op, ConstMatRef<float>, Op, MatRef<float>, bool,
                           Buffer<float>&);
 template void gemm<double>(ConstMatRef<double>, Op, ConstMatRef<double>, Op, MatRef<double>, bool,
                            Buffer<double>&);
+template Buffer<float>& gemm_scratch<float>();
+template Buffer<double>& gemm_scratch<double>();
 
 }  // namespace corrmp::nn

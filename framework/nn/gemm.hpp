@@ -52,9 +52,16 @@ void gemm(ConstMatRef<S> a, Op op_a, ConstMatRef<S> b, Op op_b, MatRef<S> c, boo
 /// products, used otherwise, group their sums by block position.
 bool gemm_float_split_exact();
 
+/// A scratch buffer for gemm, one per thread: layers that run on several threads at once (a
+/// model predicting in several evaluation trials, a team's members) keep none of their own.
+template <class S>
+Buffer<S>& gemm_scratch();
+
 extern template void gemm<float>(ConstMatRef<float>, Op, ConstMatRef<float>, Op, MatRef<float>,
                                  bool, Buffer<float>&);
 extern template void gemm<double>(ConstMatRef<double>, Op, ConstMatRef<double>, Op, MatRef<double>,
                                   bool, Buffer<double>&);
+extern template Buffer<float>& gemm_scratch<float>();
+extern template Buffer<double>& gemm_scratch<double>();
 
 }  // namespace corrmp::nn

@@ -8,18 +8,6 @@
 
 namespace corrmp::nn {
 
-namespace {
-
-// The transposed operand of a product (nn/gemm.hpp), one per thread: a model may predict from
-// several threads at once (the evaluation's trials), so the layer keeps none of its own.
-template <class S>
-Buffer<S>& scratch() {
-  thread_local Buffer<S> buffer;
-  return buffer;
-}
-
-}  // namespace
-
 template <class S>
 Linear<S>::Linear(Index in, Index out, Rng& rng)
     : weight_(out, in), bias_(out), weight_grad_(out, in), bias_grad_(out) {
@@ -43,7 +31,7 @@ void Linear<S>::forward_part(ConstMatRef<S> x, MatRef<S> y, Index first, Index c
   if (count == 0) return;
   auto part = y.middleCols(first, count);
   gemm<S>(x, Op::kPlain, weight_.middleRows(first, count), Op::kTransposed, part, false,
-          scratch<S>());
+          gemm_scratch<S>());
   part.rowwise() += bias_.segment(first, count);
 }
 
@@ -51,7 +39,7 @@ template <class S>
 void Linear<S>::accumulate_param_grad(ConstMatRef<S> x, ConstMatRef<S> dy) {
   check_shape("Linear::backward", "x", x, x.rows(), in_features());
   check_shape("Linear::backward", "dy", dy, x.rows(), out_features());
-  gemm<S>(dy, Op::kTransposed, x, Op::kPlain, weight_grad_, true, scratch<S>());
+  gemm<S>(dy, Op::kTransposed, x, Op::kPlain, weight_grad_, true, gemm_scratch<S>());
   accumulate_bias_grad(dy);
 }
 
@@ -59,7 +47,8 @@ template <class S>
 void Linear<S>::weight_grad_part(ConstMatRef<S> x, ConstMatRef<S> dy, Index first, Index count) {
   if (count == 0) return;
   auto part = weight_grad_.middleRows(first, count);
-  gemm<S>(dy.middleCols(first, count), Op::kTransposed, x, Op::kPlain, part, true, scratch<S>());
+  gemm<S>(dy.middleCols(first, count), Op::kTransposed, x, Op::kPlain, part, true,
+          gemm_scratch<S>());
 }
 
 template <class S>
@@ -78,7 +67,8 @@ template <class S>
 void Linear<S>::input_grad_part(ConstMatRef<S> dy, MatRef<S> dx, Index first, Index count) const {
   if (count == 0) return;
   auto part = dx.middleCols(first, count);
-  gemm<S>(dy, Op::kPlain, weight_.middleCols(first, count), Op::kPlain, part, false, scratch<S>());
+  gemm<S>(dy, Op::kPlain, weight_.middleCols(first, count), Op::kPlain, part, false,
+          gemm_scratch<S>());
 }
 
 template <class S>

@@ -60,7 +60,9 @@ class Linear {
   const Mat<S>& weight() const { return weight_; }
   Eigen::Matrix<S, 1, Eigen::Dynamic>& bias() { return bias_; }
   const Eigen::Matrix<S, 1, Eigen::Dynamic>& bias() const { return bias_; }
+  Mat<S>& weight_grad() { return weight_grad_; }
   const Mat<S>& weight_grad() const { return weight_grad_; }
+  Eigen::Matrix<S, 1, Eigen::Dynamic>& bias_grad() { return bias_grad_; }
   const Eigen::Matrix<S, 1, Eigen::Dynamic>& bias_grad() const { return bias_grad_; }
 
  private:

@@ -121,10 +121,12 @@ ConstMatMap<S> Mlp<S>::backward_part(ConstMatRef<S> dy, bool input_grad, const T
 }
 
 template <class S>
-std::vector<Parameter<S>> Mlp<S>::parameters(const std::string& prefix) {
+std::vector<Parameter<S>> Mlp<S>::parameters(const std::string& prefix, Index first_number) {
   std::vector<Parameter<S>> params;
-  for (std::size_t i = 0; i < layers_.size(); ++i)
-    append_parameters(params, layers_[i].parameters(prefix + "layers." + std::to_string(i) + "."));
+  for (std::size_t i = 0; i < layers_.size(); ++i) {
+    const std::string number = std::to_string(first_number + static_cast<Index>(i));
+    append_parameters(params, layers_[i].parameters(prefix + "layers." + number + "."));
+  }
   return params;
 }
 

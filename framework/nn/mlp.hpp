@@ -52,8 +52,9 @@ class Mlp {
   /// Returns dL/dx when input_grad, else an empty view.
   ConstMatMap<S> backward_part(ConstMatRef<S> dy, bool input_grad, const Team& team);
 
-  /// prefix + "layers.<i>.weight" / "layers.<i>.bias" for every layer i.
-  std::vector<Parameter<S>> parameters(const std::string& prefix = "");
+  /// prefix + "layers.<i>.weight" / "layers.<i>.bias" for every layer i, numbered from
+  /// first_number (for an Mlp that continues another network's layers).
+  std::vector<Parameter<S>> parameters(const std::string& prefix = "", Index first_number = 0);
   Index num_parameters() const;
 
   const std::vector<Index>& sizes() const { return sizes_; }

@@ -26,8 +26,8 @@ CnmpArchitecture small_architecture() {
   return a;
 }
 
-TEST(CnmpGrad, TrainStepMatchesFiniteDifferencesWithVariableCounts) {
-  const CnmpArchitecture a = small_architecture();
+// The gradients of train_step against finite differences, for two tasks with different counts.
+void expect_train_step_gradients_match(const CnmpArchitecture& a) {
   nn::Rng rng(5);
   Cnmp<double> model(a, rng);
   const CnmpBatchCounts counts{{2, 3}, {1, 2}};  // two tasks, different counts
@@ -48,6 +48,51 @@ TEST(CnmpGrad, TrainStepMatchesFiniteDifferencesWithVariableCounts) {
   }
   nn::testing::expect_gradients_match(
       [&] { return model.train_step(observations, contexts, target_x, target_y, counts); }, cases);
+}
+
+TEST(CnmpGrad, TrainStepMatchesFiniteDifferencesWithVariableCounts) {
+  expect_train_step_gradients_match(small_architecture());
+}
+
+TEST(CnmpGrad, ADecoderOfOneLayerWithoutContextMatchesFiniteDifferences) {
+  CnmpArchitecture a = small_architecture();
+  a.d_context = 0;
+  a.decoder_layers = 1;
+  expect_train_step_gradients_match(a);
+}
+
+// The CNMP's definition computed with plain layers: the mean encoding r, then the decoder on
+// the rows [r, c, x_q], every target repeating r.
+TEST(Cnmp, PredictsWhatTheDecoderGivesForTheMeanEncodingRepeatedPerQuery) {
+  const CnmpArchitecture a = small_architecture();
+  nn::Rng rng(5);
+  Cnmp<double> model(a, rng);
+  nn::Mlp<double> encoder({a.d_x + a.d_y, a.width, a.width}, rng);
+  nn::Mlp<double> decoder({a.width + a.d_context + a.d_x, a.width, a.width, 2 * a.d_y}, rng);
+  // The reference takes the model's weights by name: the model file's names and layout.
+  auto reference = encoder.parameters("encoder.");
+  nn::append_parameters(reference, decoder.parameters("decoder."));
+  const auto params = model.parameters();
+  ASSERT_EQ(reference.size(), params.size());
+  for (size_t k = 0; k < params.size(); ++k) {
+    ASSERT_EQ(reference[k].name, params[k].name);
+    ASSERT_EQ(reference[k].shape, params[k].shape);
+    reference[k].values() = params[k].values();
+  }
+  const MatD observations = nn::testing::random_matrix(3, a.d_x + a.d_y, rng);
+  const MatD context = nn::testing::random_matrix(1, a.d_context, rng);
+  const MatD query = nn::testing::random_matrix(4, a.d_x, rng);
+  MatD mean, std;
+  model.predict(observations, context, query, mean, std);
+
+  const Eigen::RowVectorXd r = encoder.forward(observations).colwise().mean();
+  MatD rows(4, a.width + a.d_context + a.d_x);
+  for (int t = 0; t < 4; ++t) rows.row(t) << r, context.row(0), query.row(t);
+  const MatD out = decoder.forward(rows);
+  EXPECT_LT((mean - out.leftCols(a.d_y)).cwiseAbs().maxCoeff(), 1e-12);
+  MatD expected_std(4, a.d_y);
+  nn::GaussianNll<double>(a.min_std).std_from_raw(out.rightCols(a.d_y), expected_std);
+  EXPECT_LT((std - expected_std).cwiseAbs().maxCoeff(), 1e-12);
 }
 
 TEST(CnmpArchitecture, ParameterCountMatchesTheNetworkAndBudgetsPickTheClosestWidth) {
