@@ -4,7 +4,10 @@
 // 4 x 128, Adam; d_x 1, d_y 3, context 1; batch 1, up to 5 observations, 1
 // target): one full update = sampling + forward + backward + Adam step.
 // items_per_second is updates per second; GFLOP/s counts the multiply-adds of
-// the matrix products (2 flops each) of forward and backward passes.
+// the matrix products (2 flops each) of forward and backward passes with the
+// decoder's first layer applied to every target row; it computes the
+// representation's part once per task (cnmp/decoder_first_layer.hpp), so with
+// several targets per task this is an effective rate.
 #include <benchmark/benchmark.h>
 
 #include <cmath>
