@@ -3,6 +3,7 @@
 
 #include <fmt/format.h>
 
+#include <numeric>
 #include <stdexcept>
 #include <utility>
 
@@ -90,26 +91,39 @@ void Cnmp<S>::spread_representation_grad(const CnmpBatchCounts& counts, nn::Inde
   nn::Index obs_row = 0;
   for (size_t b = 0; b < counts.observations.size(); ++b) {
     const int n = counts.observations[b];
-    // r_b is the mean of n encodings: each receives 1/n of dL/dr_b.
-    d_encoded.middleRows(obs_row, n).rowwise() =
-        d_r.row(static_cast<nn::Index>(b)) / static_cast<S>(n);
-    obs_row += n;
+    // r_b is the mean of n encodings: each receives 1/n of dL/dr_b (row by row: Eigen would
+    // evaluate the quotient into a heap temporary for a rowwise assignment).
+    for (int i = 0; i < n; ++i, ++obs_row)
+      d_encoded.row(obs_row) = d_r.row(static_cast<nn::Index>(b)) / static_cast<S>(n);
   }
 }
 
 template <class S>
 void Cnmp<S>::prepare_forward(nn::ConstMatRef<S> observations, nn::ConstMatRef<S> contexts,
                               nn::ConstMatRef<S> target_x, const CnmpBatchCounts& counts) {
+  const auto& a = architecture_;
   const auto tasks = static_cast<nn::Index>(counts.observations.size());
+  const auto total = [](const std::vector<int>& v) {
+    return std::accumulate(v.begin(), v.end(), nn::Index(0));
+  };
+  if (observations.cols() != a.d_x + a.d_y || target_x.cols() != a.d_x ||
+      (a.d_context > 0 && (contexts.rows() != tasks || contexts.cols() != a.d_context)) ||
+      counts.targets.size() != counts.observations.size() ||
+      total(counts.observations) != observations.rows() || total(counts.targets) != target_x.rows())
+    throw std::invalid_argument(fmt::format(
+        "CNMP batch of {} tasks: observations {}x{}, contexts {}x{}, queries {}x{} and {} target "
+        "counts do not match the network (d_x {}, d_y {}, context {}) or the counts",
+        tasks, observations.rows(), observations.cols(), contexts.rows(), contexts.cols(),
+        target_x.rows(), target_x.cols(), counts.targets.size(), a.d_x, a.d_y, a.d_context));
   encoder_.prepare(observations.rows());
   encoder_.input() = observations;
-  representation_.resize(tasks, architecture_.width);
+  representation_.resize(tasks, a.width);
   fill_queries(contexts, target_x, counts.targets);
   decoder_first_.prepare(tasks);
   if (decoder_rest_)
     decoder_rest_->prepare(target_x.rows());
   else
-    one_layer_output_.resize(target_x.rows(), 2 * architecture_.d_y);
+    one_layer_output_.resize(target_x.rows(), 2 * a.d_y);
 }
 
 template <class S>

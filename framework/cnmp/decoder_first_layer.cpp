@@ -24,7 +24,7 @@ void DecoderFirstLayer<S>::forward_part(nn::ConstMatRef<S> r, nn::ConstMatRef<S>
                                         nn::Index first, nn::Index count) {
   if (count == 0) return;
   const auto& w = linear_.weight();
-  const nn::Index rep = representation_size_, query = w.cols() - rep;
+  const nn::Index rep = representation_size_, query = linear_.in_features() - rep;
   auto p = task_products_.shaped(r.rows(), out_features()).middleCols(first, count);
   nn::gemm<S>(r, nn::Op::kPlain, w.block(first, 0, count, rep), nn::Op::kTransposed, p, false,
               nn::gemm_scratch<S>());
@@ -44,7 +44,7 @@ void DecoderFirstLayer<S>::backward_params_part(nn::ConstMatRef<S> r, nn::ConstM
                                                 const std::vector<int>& target_counts,
                                                 nn::Index first, nn::Index count) {
   if (count == 0) return;
-  const nn::Index rep = representation_size_, query = q.cols();
+  const nn::Index rep = representation_size_, query = linear_.in_features() - rep;
   auto s = task_grads_.shaped(r.rows(), out_features()).middleCols(first, count);
   const auto gp = g.middleCols(first, count);
   auto db = linear_.bias_grad().segment(first, count);

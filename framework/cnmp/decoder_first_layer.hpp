@@ -13,9 +13,9 @@
 // multiply-adds; a prediction of 200 points repeats it 200 times.
 //
 // The *_part calls cut the work among a team's members (nn/team.hpp) by output columns (or, for
-// dL/dr, representation columns), every entry computed exactly as a whole call computes it: the
-// products run on nn/gemm.hpp's kernel and the sums over targets and tasks are plain loops in
-// row order.
+// dL/dr, representation columns). Where float products run on nn/gemm.hpp's split-exact kernel
+// (the only builds that run a team), every entry is computed exactly as a whole call computes
+// it: the sums over targets and tasks are plain loops in row order.
 #pragma once
 
 #include <string>

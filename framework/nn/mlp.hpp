@@ -1,6 +1,7 @@
 // Multi-layer perceptron: Linear layers with ReLU between them and no activation after the
-// last. The CNMP encoder (3 layers) and decoder (4 layers) of the paper are Mlps of width 128
-// (Section "General Framework", training parameters table).
+// last. The CNMP encoder (3 layers) of the paper is an Mlp of width 128, and so are the layers
+// of its decoder (4 layers) after the first (Section "General Framework", training parameters
+// table; cnmp/cnmp.hpp).
 //
 // sizes = {in, h1, ..., out} gives L = sizes.size() - 1 Linear layers. With a_0 = x:
 //   forward:   z_i = a_{i-1} W_i^T + 1 b_i^T,   a_i = relu(z_i) for i < L,   y = z_L

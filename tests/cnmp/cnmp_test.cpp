@@ -1,13 +1,18 @@
-// Tests of the CNMP: gradients of the whole model against finite differences,
-// parameter counting and budgets, model-file round trips.
+// Tests of the CNMP: gradients of the whole model against finite differences, its
+// prediction against the definition computed with plain layers, no allocation once warmed
+// up, batches refused, parameter counting and budgets, model-file round trips.
 #include "cnmp/cnmp.hpp"
 
 #include <gtest/gtest.h>
+
+#include <cmath>
+#include <numeric>
 
 #include "nn/gradient_check.hpp"
 
 #include "cnmp/cnmp_model.hpp"
 #include "config/test_files.hpp"
+#include "support/allocation_counter.hpp"
 
 namespace corrmp {
 namespace {
@@ -62,14 +67,15 @@ TEST(CnmpGrad, ADecoderOfOneLayerWithoutContextMatchesFiniteDifferences) {
 }
 
 // The CNMP's definition computed with plain layers: the mean encoding r, then the decoder on
-// the rows [r, c, x_q], every target repeating r.
+// the rows [r, c, x_q], every target repeating r. The plain layers drawn from the same seed
+// have the model's weights under the model's names (those of its model files).
 TEST(Cnmp, PredictsWhatTheDecoderGivesForTheMeanEncodingRepeatedPerQuery) {
   const CnmpArchitecture a = small_architecture();
-  nn::Rng rng(5);
+  nn::Rng rng(5), reference_rng(5);
   Cnmp<double> model(a, rng);
-  nn::Mlp<double> encoder({a.d_x + a.d_y, a.width, a.width}, rng);
-  nn::Mlp<double> decoder({a.width + a.d_context + a.d_x, a.width, a.width, 2 * a.d_y}, rng);
-  // The reference takes the model's weights by name: the model file's names and layout.
+  nn::Mlp<double> encoder({a.d_x + a.d_y, a.width, a.width}, reference_rng);
+  nn::Mlp<double> decoder({a.width + a.d_context + a.d_x, a.width, a.width, 2 * a.d_y},
+                          reference_rng);
   auto reference = encoder.parameters("encoder.");
   nn::append_parameters(reference, decoder.parameters("decoder."));
   const auto params = model.parameters();
@@ -77,7 +83,7 @@ TEST(Cnmp, PredictsWhatTheDecoderGivesForTheMeanEncodingRepeatedPerQuery) {
   for (size_t k = 0; k < params.size(); ++k) {
     ASSERT_EQ(reference[k].name, params[k].name);
     ASSERT_EQ(reference[k].shape, params[k].shape);
-    reference[k].values() = params[k].values();
+    EXPECT_EQ(reference[k].values(), params[k].values()) << params[k].name;
   }
   const MatD observations = nn::testing::random_matrix(3, a.d_x + a.d_y, rng);
   const MatD context = nn::testing::random_matrix(1, a.d_context, rng);
@@ -93,6 +99,56 @@ TEST(Cnmp, PredictsWhatTheDecoderGivesForTheMeanEncodingRepeatedPerQuery) {
   MatD expected_std(4, a.d_y);
   nn::GaussianNll<double>(a.min_std).std_from_raw(out.rightCols(a.d_y), expected_std);
   EXPECT_LT((std - expected_std).cwiseAbs().maxCoeff(), 1e-12);
+}
+
+// Once warmed up with its largest batch, a training step allocates nothing, also for smaller
+// batches (counted by tests/support/allocation_counter.hpp).
+TEST(Cnmp, AWarmedUpTrainingStepDoesNotAllocate) {
+  if (!testing::kAllocationCounting) GTEST_SKIP() << "allocation counting is off under sanitizers";
+  const CnmpArchitecture a = small_architecture();
+  nn::Rng rng(5);
+  Cnmp<float> model(a, rng);
+  std::vector<CnmpBatchCounts> batches{{{3, 2, 4}, {5, 1, 3}}, {{1, 2}, {2, 0}}, {{2}, {1}}};
+  std::vector<nn::Mat<float>> inputs;  // observations, contexts, target x, target y per batch
+  for (const CnmpBatchCounts& c : batches) {
+    const auto sum = [](const std::vector<int>& v) {
+      return std::accumulate(v.begin(), v.end(), 0);
+    };
+    const auto tasks = static_cast<nn::Index>(c.observations.size());
+    inputs.push_back(nn::Mat<float>::Random(sum(c.observations), a.d_x + a.d_y));
+    inputs.push_back(nn::Mat<float>::Random(tasks, a.d_context));
+    inputs.push_back(nn::Mat<float>::Random(sum(c.targets), a.d_x));
+    inputs.push_back(nn::Mat<float>::Random(sum(c.targets), a.d_y));
+  }
+  const auto step = [&](size_t b) {
+    return model.train_step(inputs[4 * b], inputs[4 * b + 1], inputs[4 * b + 2], inputs[4 * b + 3],
+                            batches[b]);
+  };
+  step(0);  // warm-up with the largest batch
+  float loss = 0.0f;
+  const long allocations = testing::count_allocations([&] {
+    for (size_t b = 0; b < batches.size(); ++b) loss += step(b);
+  });
+  EXPECT_EQ(allocations, 0);
+  EXPECT_TRUE(std::isfinite(loss));
+}
+
+TEST(Cnmp, ATrainingBatchThatDoesNotMatchItsCountsIsRefused) {
+  const CnmpArchitecture a = small_architecture();
+  nn::Rng rng(5);
+  Cnmp<double> model(a, rng);
+  const CnmpBatchCounts counts{{2, 3}, {1, 2}};
+  const MatD contexts = MatD::Zero(2, a.d_context);
+  const MatD target_y = MatD::Zero(3, a.d_y);
+  // 4 observation rows for counts adding up to 5, then rows of the wrong width.
+  EXPECT_THROW(model.train_step(MatD::Zero(4, a.d_x + a.d_y), contexts, MatD::Zero(3, a.d_x),
+                                target_y, counts),
+               std::invalid_argument);
+  EXPECT_THROW(model.train_step(MatD::Zero(5, a.d_x + a.d_y + 1), contexts, MatD::Zero(3, a.d_x),
+                                target_y, counts),
+               std::invalid_argument);
+  EXPECT_NO_THROW(model.train_step(MatD::Zero(5, a.d_x + a.d_y), contexts, MatD::Zero(3, a.d_x),
+                                   target_y, counts));
 }
 
 TEST(CnmpArchitecture, ParameterCountMatchesTheNetworkAndBudgetsPickTheClosestWidth) {

@@ -1,6 +1,7 @@
 // Tests of the CNMP update computed by a team of threads (cnmp/parallel_cnmp_step.hpp): it must
 // give exactly the losses and weights of the one-thread update, whatever the number of workers,
-// for widths that do and do not split evenly and with and without a context.
+// for widths that do and do not split evenly, with and without a context, and with a decoder of
+// one layer.
 #include "cnmp/parallel_cnmp_step.hpp"
 
 #include <gtest/gtest.h>
@@ -100,11 +101,13 @@ TEST(ParallelCnmpStep, TwoWorkersGiveExactlyTheOneWorkerUpdates) {
 
 TEST(ParallelCnmpStep, UnevenWidthsAndNoContextStayIdentical) {
   SKIP_UNLESS_SPLIT_EXACT();
-  for (int width : {37, 223}) {
-    const CnmpArchitecture a = architecture(width, 0);
+  for (const auto& [width, decoder_layers] : {std::pair{37, 4}, {223, 4}, {37, 1}}) {
+    CnmpArchitecture a = architecture(width, 0);
+    a.decoder_layers = decoder_layers;  // 1: the first layer is the output layer
     const Trained one = train(a, 1, 15);
     for (int workers : {2, 3}) {
-      SCOPED_TRACE(testing::Message() << "width " << width << ", " << workers << " workers");
+      SCOPED_TRACE(testing::Message() << "width " << width << ", " << decoder_layers
+                                      << " decoder layers, " << workers << " workers");
       expect_identical(one, train(a, workers, 15));
     }
   }
