@@ -3,6 +3,7 @@
 
 #include <fmt/format.h>
 
+#include <algorithm>
 #include <numeric>
 #include <stdexcept>
 #include <utility>
@@ -106,13 +107,18 @@ void Cnmp<S>::prepare_forward(nn::ConstMatRef<S> observations, nn::ConstMatRef<S
   const auto total = [](const std::vector<int>& v) {
     return std::accumulate(v.begin(), v.end(), nn::Index(0));
   };
+  const auto at_least = [](const std::vector<int>& v, int least) {
+    return std::all_of(v.begin(), v.end(), [least](int n) { return n >= least; });
+  };
   if (observations.cols() != a.d_x + a.d_y || target_x.cols() != a.d_x ||
-      (a.d_context > 0 && (contexts.rows() != tasks || contexts.cols() != a.d_context)) ||
-      counts.targets.size() != counts.observations.size() ||
-      total(counts.observations) != observations.rows() || total(counts.targets) != target_x.rows())
+      contexts.cols() != a.d_context || (a.d_context > 0 && contexts.rows() != tasks) ||
+      counts.targets.size() != counts.observations.size() || !at_least(counts.observations, 1) ||
+      !at_least(counts.targets, 0) || total(counts.observations) != observations.rows() ||
+      total(counts.targets) != target_x.rows())
     throw std::invalid_argument(fmt::format(
         "CNMP batch of {} tasks: observations {}x{}, contexts {}x{}, queries {}x{} and {} target "
-        "counts do not match the network (d_x {}, d_y {}, context {}) or the counts",
+        "counts do not match the network (d_x {}, d_y {}, context {}) or the counts (at least one "
+        "observation per task)",
         tasks, observations.rows(), observations.cols(), contexts.rows(), contexts.cols(),
         target_x.rows(), target_x.cols(), counts.targets.size(), a.d_x, a.d_y, a.d_context));
   encoder_.prepare(observations.rows());

@@ -147,6 +147,10 @@ TEST(Cnmp, ATrainingBatchThatDoesNotMatchItsCountsIsRefused) {
   EXPECT_THROW(model.train_step(MatD::Zero(5, a.d_x + a.d_y + 1), contexts, MatD::Zero(3, a.d_x),
                                 target_y, counts),
                std::invalid_argument);
+  // A task without observations would average nothing.
+  EXPECT_THROW(model.train_step(MatD::Zero(5, a.d_x + a.d_y), contexts, MatD::Zero(3, a.d_x),
+                                target_y, CnmpBatchCounts{{0, 5}, {1, 2}}),
+               std::invalid_argument);
   EXPECT_NO_THROW(model.train_step(MatD::Zero(5, a.d_x + a.d_y), contexts, MatD::Zero(3, a.d_x),
                                    target_y, counts));
 }
