@@ -8,6 +8,7 @@
 #include <stdexcept>
 #include <utility>
 
+#include "nn/activation.hpp"
 #include "nn/relu_fusion.hpp"
 
 namespace corrmp {
@@ -185,11 +186,10 @@ S Cnmp<S>::train_step_part(nn::ConstMatRef<S> target_y, const CnmpBatchCounts& c
   const auto [first, count] = team.share(decoder_first_.out_features());
   if (decoder_rest_) {
     const auto d_input = decoder_rest_->backward_part(d_output_.view(), true, team);
-    const auto z = decoder_rest_->input();
-    auto d_first = d_first_.view();
+    const auto activation = decoder_rest_->input();  // relu(z)
     if (count > 0)
-      d_first.middleCols(first, count) = (z.middleCols(first, count).array() > S(0))
-                                             .select(d_input.middleCols(first, count), S(0));
+      nn::Relu<S>().backward(activation.middleCols(first, count), d_input.middleCols(first, count),
+                             d_first_.view().middleCols(first, count));
   }
   const nn::ConstMatMap<S> g =
       decoder_rest_ ? std::as_const(d_first_).view() : std::as_const(d_output_).view();
