@@ -1,16 +1,16 @@
-// Winograd F(2x2, 3x3) convolution (formulas in nn/winograd_conv3x3.hpp).
+// Winograd F(4x4, 3x3) convolution (formulas in nn/winograd_conv3x3.hpp).
 //
 // Tile t of image n is (tile row ty, tile column tx), column n T + ty TW + tx of the chunk's
-// matrices (T = TH TW tiles per image). The transforms run along a tile row with the tiles'
-// columns split by parity: input patch column 2 tx - 1 + q is an odd image column for q = 0, 2
-// and an even one for q = 1, 3, so every term of a transform is a contiguous run over tx and the
-// loops vectorise.
+// matrices (T = TH TW tiles per image). A channel is first copied into a plane padded by one zero
+// row and column on top and left (and zeros past the image up to whole tiles), and its tiles'
+// patches gathered side by side: entry (r, q) of every tile's patch is one contiguous run over t.
+// The 2-D transforms are then 1-D transforms along the patch columns and then the rows (or the
+// reverse), each a loop over t that vectorises.
 #include "nn/winograd_conv3x3.hpp"
 
 #include <algorithm>
 #include <limits>
 #include <stdexcept>
-#include <type_traits>
 
 #include "nn/gemm.hpp"
 
@@ -19,12 +19,17 @@ namespace {
 
 // The chunk's matrices hold at most about this many values each (512 KB of floats).
 constexpr Index kChunkValues = Index(1) << 17;
-// Gap between the 16 term matrices of a chunk: the transforms write (or read) all 16 at the same
+// Gap between the 36 term matrices of a chunk: the transforms write (or read) all 36 at the same
 // offset, and matrices a power of two apart would fall into the same cache sets.
 constexpr Index kTermGap = 16;
 
-// The 16 output (or input) arrays of a transform are distinct but lie in one buffer, so the
-// compiler cannot prove that stores to them do not overlap across tiles; it is told so.
+// G of the weight transform (nn/winograd_conv3x3.hpp).
+constexpr double kG[6][3] = {
+    {1.0 / 4, 0.0, 0.0},           {-1.0 / 6, -1.0 / 6, -1.0 / 6}, {-1.0 / 6, 1.0 / 6, -1.0 / 6},
+    {1.0 / 24, 1.0 / 12, 1.0 / 6}, {1.0 / 24, -1.0 / 12, 1.0 / 6}, {0.0, 0.0, 1.0}};
+
+// The arrays a transform reads and writes are distinct but lie in one buffer, so the compiler
+// cannot prove that stores to them do not overlap across tiles; it is told so.
 #if defined(__clang__)
 #define CORRMP_INDEPENDENT_TILES _Pragma("clang loop vectorize(assume_safety)")
 #elif defined(__GNUC__)
@@ -33,233 +38,188 @@ constexpr Index kTermGap = 16;
 #define CORRMP_INDEPENDENT_TILES
 #endif
 
-// The tile transforms, each on n tiles at once (vectorised over tiles). Entry (r, q) of tile t's
-// matrix is at base[(columns r + q) stride + t].
-
-// V = B^T d B of the input patches, d[r][q] at patches[r row_stride + (q mod 2) parity_stride +
-// q div 2 + t] (see transform_inputs). The kernels are written out term by term: loops over the
-// entries would keep the compiler from vectorising over tiles.
+// How a 1-D transform reads value j of tile t: rows `step` apart ...
 template <class S>
-void input_tiles(Index n, const S* __restrict patches, Index row_stride, Index parity_stride,
-                 S* __restrict v, Index v_stride) {
-  const S* __restrict rows[4][2];  // rows[r][parity]
-  for (int r = 0; r < 4; ++r)
-    for (int parity = 0; parity < 2; ++parity)
-      rows[r][parity] = patches + r * row_stride + parity * parity_stride;
+struct Strided {
+  const S* values;
+  Index step;
+  S operator()(int j, Index t) const { return values[j * step + t]; }
+};
+
+// ... or from rows split by phase: value j is in phase j mod 4, `shift` further on for j >= 4
+// (the plane of WinogradConv3x3::transform_inputs).
+template <class S>
+struct Phased {
+  const S* values;
+  Index phase_stride, shift;
+  S operator()(int j, Index t) const {
+    return values[(j % 4) * phase_stride + (j / 4) * shift + t];
+  }
+};
+
+// The 1-D transforms, each on n tiles at once (vectorised over tiles): value j of tile t is
+// in(j, t), result k goes to out[k out_step + t].
+
+// B^T d (6 -> 6).
+template <class S, class In>
+void input_1d(Index n, In in, S* __restrict out, Index out_step) {
   CORRMP_INDEPENDENT_TILES
   for (Index t = 0; t < n; ++t) {
-    const S d00 = rows[0][0][t], d01 = rows[0][1][t], d02 = rows[0][0][t + 1],
-            d03 = rows[0][1][t + 1];
-    const S d10 = rows[1][0][t], d11 = rows[1][1][t], d12 = rows[1][0][t + 1],
-            d13 = rows[1][1][t + 1];
-    const S d20 = rows[2][0][t], d21 = rows[2][1][t], d22 = rows[2][0][t + 1],
-            d23 = rows[2][1][t + 1];
-    const S d30 = rows[3][0][t], d31 = rows[3][1][t], d32 = rows[3][0][t + 1],
-            d33 = rows[3][1][t + 1];
-    // a = B^T d
-    const S a00 = d00 - d20, a10 = d10 + d20, a20 = d20 - d10, a30 = d10 - d30;
-    const S a01 = d01 - d21, a11 = d11 + d21, a21 = d21 - d11, a31 = d11 - d31;
-    const S a02 = d02 - d22, a12 = d12 + d22, a22 = d22 - d12, a32 = d12 - d32;
-    const S a03 = d03 - d23, a13 = d13 + d23, a23 = d23 - d13, a33 = d13 - d33;
-    // V = a B
-    v[0 * v_stride + t] = a00 - a02;
-    v[1 * v_stride + t] = a01 + a02;
-    v[2 * v_stride + t] = a02 - a01;
-    v[3 * v_stride + t] = a01 - a03;
-    v[4 * v_stride + t] = a10 - a12;
-    v[5 * v_stride + t] = a11 + a12;
-    v[6 * v_stride + t] = a12 - a11;
-    v[7 * v_stride + t] = a11 - a13;
-    v[8 * v_stride + t] = a20 - a22;
-    v[9 * v_stride + t] = a21 + a22;
-    v[10 * v_stride + t] = a22 - a21;
-    v[11 * v_stride + t] = a21 - a23;
-    v[12 * v_stride + t] = a30 - a32;
-    v[13 * v_stride + t] = a31 + a32;
-    v[14 * v_stride + t] = a32 - a31;
-    v[15 * v_stride + t] = a31 - a33;
+    const S d0 = in(0, t), d1 = in(1, t), d2 = in(2, t), d3 = in(3, t), d4 = in(4, t),
+            d5 = in(5, t);
+    const S even = d4 - S(4) * d2, odd = S(4) * d1 - d3;  // rows 1 and 2
+    const S near = d4 - d2, far = S(2) * (d3 - d1);       // rows 3 and 4
+    out[t] = S(4) * d0 - S(5) * d2 + d4;
+    out[out_step + t] = even - odd;
+    out[2 * out_step + t] = even + odd;
+    out[3 * out_step + t] = near + far;
+    out[4 * out_step + t] = near - far;
+    out[5 * out_step + t] = S(4) * d1 - S(5) * d3 + d5;
   }
 }
 
-// B dV B^T, the adjoint of input_tiles' transform (4x4 -> 4x4).
+// B v, the adjoint of input_1d (6 -> 6), for value k of tile t at v[k v_step + t].
 template <class S>
-void input_grad_tiles(Index n, const S* __restrict dv, Index dv_stride, S* __restrict dd,
-                      Index dd_stride) {
+struct InputGrad {
+  S e[6];
+  InputGrad(const S* __restrict v, Index v_step, Index t) {
+    const S v0 = v[t], v1 = v[v_step + t], v2 = v[2 * v_step + t], v3 = v[3 * v_step + t],
+            v4 = v[4 * v_step + t], v5 = v[5 * v_step + t];
+    e[0] = S(4) * v0;
+    e[1] = S(4) * (v2 - v1 + v5) + S(2) * (v4 - v3);
+    e[2] = -S(5) * v0 - S(4) * (v1 + v2) - (v3 + v4);
+    e[3] = (v1 - v2) + S(2) * (v3 - v4) - S(5) * v5;
+    e[4] = v0 + (v1 + v2) + (v3 + v4);
+    e[5] = v5;
+  }
+};
+
+template <class S>
+void input_grad_1d(Index n, const S* __restrict in, Index in_step, S* __restrict out,
+                   Index out_step) {
   CORRMP_INDEPENDENT_TILES
   for (Index t = 0; t < n; ++t) {
-    const S v00 = dv[0 * dv_stride + t], v01 = dv[1 * dv_stride + t], v02 = dv[2 * dv_stride + t],
-            v03 = dv[3 * dv_stride + t];
-    const S v10 = dv[4 * dv_stride + t], v11 = dv[5 * dv_stride + t], v12 = dv[6 * dv_stride + t],
-            v13 = dv[7 * dv_stride + t];
-    const S v20 = dv[8 * dv_stride + t], v21 = dv[9 * dv_stride + t], v22 = dv[10 * dv_stride + t],
-            v23 = dv[11 * dv_stride + t];
-    const S v30 = dv[12 * dv_stride + t], v31 = dv[13 * dv_stride + t],
-            v32 = dv[14 * dv_stride + t], v33 = dv[15 * dv_stride + t];
-    // e = B dV
-    const S e00 = v00, e10 = v10 - v20 + v30, e20 = v10 + v20 - v00, e30 = -v30;
-    const S e01 = v01, e11 = v11 - v21 + v31, e21 = v11 + v21 - v01, e31 = -v31;
-    const S e02 = v02, e12 = v12 - v22 + v32, e22 = v12 + v22 - v02, e32 = -v32;
-    const S e03 = v03, e13 = v13 - v23 + v33, e23 = v13 + v23 - v03, e33 = -v33;
-    // e B^T
-    dd[0 * dd_stride + t] = e00;
-    dd[1 * dd_stride + t] = e01 - e02 + e03;
-    dd[2 * dd_stride + t] = e01 + e02 - e00;
-    dd[3 * dd_stride + t] = -e03;
-    dd[4 * dd_stride + t] = e10;
-    dd[5 * dd_stride + t] = e11 - e12 + e13;
-    dd[6 * dd_stride + t] = e11 + e12 - e10;
-    dd[7 * dd_stride + t] = -e13;
-    dd[8 * dd_stride + t] = e20;
-    dd[9 * dd_stride + t] = e21 - e22 + e23;
-    dd[10 * dd_stride + t] = e21 + e22 - e20;
-    dd[11 * dd_stride + t] = -e23;
-    dd[12 * dd_stride + t] = e30;
-    dd[13 * dd_stride + t] = e31 - e32 + e33;
-    dd[14 * dd_stride + t] = e31 + e32 - e30;
-    dd[15 * dd_stride + t] = -e33;
+    const InputGrad<S> g(in, in_step, t);
+    for (int k = 0; k < 6; ++k) out[k * out_step + t] = g.e[k];
   }
 }
 
-// Y = A^T M A (4x4 -> 2x2).
+// The same into rows split by phase, the adjoint of input_1d with Phased values: result r goes
+// to out[(r mod 4) phase_stride + (r div 4) shift + t], results 4 and 5 added to what results 0
+// and 1 wrote (for t < n - shift). Two loops, so that none writes an entry twice.
 template <class S>
-void output_tiles(Index n, const S* __restrict m, Index m_stride, S* __restrict y, Index y_stride) {
+void input_grad_1d_phased(Index n, const S* __restrict in, Index in_step, S* __restrict out,
+                          Index phase_stride, Index shift) {
   CORRMP_INDEPENDENT_TILES
   for (Index t = 0; t < n; ++t) {
-    const S x00 = m[0 * m_stride + t], x01 = m[1 * m_stride + t], x02 = m[2 * m_stride + t],
-            x03 = m[3 * m_stride + t];
-    const S x10 = m[4 * m_stride + t], x11 = m[5 * m_stride + t], x12 = m[6 * m_stride + t],
-            x13 = m[7 * m_stride + t];
-    const S x20 = m[8 * m_stride + t], x21 = m[9 * m_stride + t], x22 = m[10 * m_stride + t],
-            x23 = m[11 * m_stride + t];
-    const S x30 = m[12 * m_stride + t], x31 = m[13 * m_stride + t], x32 = m[14 * m_stride + t],
-            x33 = m[15 * m_stride + t];
-    // r = A^T M
-    const S r00 = x00 + x10 + x20, r10 = x10 - x20 - x30;
-    const S r01 = x01 + x11 + x21, r11 = x11 - x21 - x31;
-    const S r02 = x02 + x12 + x22, r12 = x12 - x22 - x32;
-    const S r03 = x03 + x13 + x23, r13 = x13 - x23 - x33;
-    // r A
-    y[0 * y_stride + t] = r00 + r01 + r02;
-    y[1 * y_stride + t] = r01 - r02 - r03;
-    y[2 * y_stride + t] = r10 + r11 + r12;
-    y[3 * y_stride + t] = r11 - r12 - r13;
+    const InputGrad<S> g(in, in_step, t);
+    for (int r = 0; r < 4; ++r) out[r * phase_stride + t] = g.e[r];
+  }
+  CORRMP_INDEPENDENT_TILES
+  for (Index t = 0; t + shift < n; ++t) {
+    const InputGrad<S> g(in, in_step, t);
+    out[shift + t] += g.e[4];
+    out[phase_stride + shift + t] += g.e[5];
   }
 }
 
-// dM = A dY A^T, the adjoint of output_tiles' transform (2x2 -> 4x4).
+// A^T m (6 -> 4).
 template <class S>
-void output_grad_tiles(Index n, const S* __restrict dy, Index dy_stride, S* __restrict dm,
-                       Index dm_stride) {
+void output_1d(Index n, const S* __restrict in, Index in_step, S* __restrict out, Index out_step) {
   CORRMP_INDEPENDENT_TILES
   for (Index t = 0; t < n; ++t) {
-    const S y00 = dy[t], y01 = dy[dy_stride + t], y10 = dy[2 * dy_stride + t],
-            y11 = dy[3 * dy_stride + t];
-    // p = A dY
-    const S p00 = y00, p10 = y00 + y10, p20 = y00 - y10, p30 = -y10;
-    const S p01 = y01, p11 = y01 + y11, p21 = y01 - y11, p31 = -y11;
-    // p A^T
-    dm[0 * dm_stride + t] = p00;
-    dm[1 * dm_stride + t] = p00 + p01;
-    dm[2 * dm_stride + t] = p00 - p01;
-    dm[3 * dm_stride + t] = -p01;
-    dm[4 * dm_stride + t] = p10;
-    dm[5 * dm_stride + t] = p10 + p11;
-    dm[6 * dm_stride + t] = p10 - p11;
-    dm[7 * dm_stride + t] = -p11;
-    dm[8 * dm_stride + t] = p20;
-    dm[9 * dm_stride + t] = p20 + p21;
-    dm[10 * dm_stride + t] = p20 - p21;
-    dm[11 * dm_stride + t] = -p21;
-    dm[12 * dm_stride + t] = p30;
-    dm[13 * dm_stride + t] = p30 + p31;
-    dm[14 * dm_stride + t] = p30 - p31;
-    dm[15 * dm_stride + t] = -p31;
+    const S m0 = in[t], m1 = in[in_step + t], m2 = in[2 * in_step + t], m3 = in[3 * in_step + t],
+            m4 = in[4 * in_step + t], m5 = in[5 * in_step + t];
+    const S sum12 = m1 + m2, diff12 = m1 - m2, sum34 = m3 + m4, diff34 = m3 - m4;
+    out[t] = m0 + sum12 + sum34;
+    out[out_step + t] = diff12 + S(2) * diff34;
+    out[2 * out_step + t] = sum12 + S(4) * sum34;
+    out[3 * out_step + t] = diff12 + S(8) * diff34 + m5;
   }
 }
 
-// Splits an image row (`width` values, or zeros when row is null) by column parity, padded by
-// one zero on the left: before[m] = row[2 m - 1] and at[m] = row[2 m] for m in [0, tiles], 0
-// outside the row.
+// A y, the adjoint of output_1d (4 -> 6).
 template <class S>
-void split_padded(const S* row, Index width, Index tiles, S* __restrict before, S* __restrict at) {
-  if (row == nullptr) {
-    std::fill(before, before + tiles + 1, S(0));
-    std::fill(at, at + tiles + 1, S(0));
-  } else if (width % 2 == 0) {  // tiles = width / 2: no bounds inside the loop
-    // One pass over the row's pairs: the row often comes from memory, not cache, and two
-    // passes measured slower.
-    before[0] = S(0);
-    at[tiles] = S(0);
-    S* __restrict odd = before + 1;
-    for (Index m = 0; m < tiles; ++m) {
-      at[m] = row[2 * m];
-      odd[m] = row[2 * m + 1];
-    }
-  } else {
-    for (Index m = 0; m <= tiles; ++m) {
-      before[m] = m > 0 && 2 * m - 1 < width ? row[2 * m - 1] : S(0);
-      at[m] = 2 * m < width ? row[2 * m] : S(0);
-    }
+void output_grad_1d(Index n, const S* __restrict in, Index in_step, S* __restrict out,
+                    Index out_step) {
+  CORRMP_INDEPENDENT_TILES
+  for (Index t = 0; t < n; ++t) {
+    const S y0 = in[t], y1 = in[in_step + t], y2 = in[2 * in_step + t], y3 = in[3 * in_step + t];
+    const S even1 = y0 + y2, odd1 = y1 + y3, even2 = y0 + S(4) * y2, odd2 = S(2) * y1 + S(8) * y3;
+    out[t] = y0;
+    out[out_step + t] = even1 + odd1;
+    out[2 * out_step + t] = even1 - odd1;
+    out[3 * out_step + t] = even2 + odd2;
+    out[4 * out_step + t] = even2 - odd2;
+    out[5 * out_step + t] = y3;
   }
 }
 
-// Splits an image row by column parity: even[m] = row[2 m], odd[m] = row[2 m + 1] for m in
-// [0, tiles), 0 outside the row (or everywhere when row is null).
+// Splits an image row (`width` values, or zeros when row is null) by column phase:
+// phases[p phase_stride + m] = row[4 m + p] for p < 4 and m < count, 0 past the row.
 template <class S>
-void split(const S* row, Index width, Index tiles, S* __restrict even, S* __restrict odd) {
-  if (row == nullptr) {
-    std::fill(even, even + tiles, S(0));
-    std::fill(odd, odd + tiles, S(0));
-  } else if (width % 2 == 0) {
-    for (Index m = 0; m < tiles; ++m) {
-      even[m] = row[2 * m];
-      odd[m] = row[2 * m + 1];
-    }
-  } else {
-    for (Index m = 0; m < tiles; ++m) {
-      even[m] = row[2 * m];
-      odd[m] = 2 * m + 1 < width ? row[2 * m + 1] : S(0);
-    }
-  }
+void split_row(const S* __restrict row, Index width, Index count, S* __restrict phases,
+               Index phase_stride) {
+  const Index inside = row == nullptr ? 0 : std::min(count, width / 4);  // groups in the row
+  CORRMP_INDEPENDENT_TILES
+  for (Index m = 0; m < inside; ++m)
+    for (int p = 0; p < 4; ++p) phases[p * phase_stride + m] = row[4 * m + p];
+  for (Index m = inside; m < count; ++m)
+    for (int p = 0; p < 4; ++p)
+      phases[p * phase_stride + m] = row != nullptr && 4 * m + p < width ? row[4 * m + p] : S(0);
 }
 
-// One image row of the input gradient from the B dV B^T entries of the two tile rows that
-// cover it (a: patch row r, b: patch row r + 2 of the tile row above, or zeros): column 2 m gets
-// entries 1 of tile m and 3 of tile m - 1, column 2 m + 1 entries 2 of tile m and 0 of tile
-// m + 1. Overwrites row; zeroes the entries where keep (the layer input after a ReLU) is not
-// positive, unless keep is null.
+// The reverse of split_row: store(w, phases[(w mod 4) phase_stride + w div 4]) for w < width.
+template <class S, class Store>
+void merge_row(const S* __restrict phases, Index phase_stride, Index width, Store store) {
+  const Index inside = width / 4;
+  CORRMP_INDEPENDENT_TILES
+  for (Index m = 0; m < inside; ++m)
+    for (int p = 0; p < 4; ++p) store(4 * m + p, phases[p * phase_stride + m]);
+  for (Index w = 4 * inside; w < width; ++w) store(w, phases[(w % 4) * phase_stride + w / 4]);
+}
+
+// Splits an image row into the six patch columns of its tiles, the row padded by one zero on the
+// left: columns[q column_stride + m] = row[4 m + q - 1] for q < 6 and m < count, 0 outside.
 template <class S>
-void overlap_row(Index width, Index tiles, const S* const* a, const S* const* b,
-                 const S* __restrict keep, S* __restrict row) {
-  const auto out = [&](Index w, S value) {
-    row[w] = keep == nullptr || keep[w] > S(0) ? value : S(0);
+void split_patch_columns(const S* __restrict row, Index width, Index count, S* __restrict columns,
+                         Index column_stride) {
+  const auto value = [&](Index w) { return w >= 0 && w < width ? row[w] : S(0); };
+  // Tiles 1 ... inside - 1 read no padding.
+  const Index inside = std::max<Index>(1, std::min(count, (width - 1) / 4));
+  for (int q = 0; q < 6; ++q) columns[q * column_stride] = value(q - 1);
+  CORRMP_INDEPENDENT_TILES
+  for (Index m = 1; m < inside; ++m)
+    for (int q = 0; q < 6; ++q) columns[q * column_stride + m] = row[4 * m + q - 1];
+  for (Index m = inside; m < count; ++m)
+    for (int q = 0; q < 6; ++q) columns[q * column_stride + m] = value(4 * m + q - 1);
+}
+
+// The reverse of split_patch_columns, adding the columns that overlap: image column
+// w = 4 m + q - 1 gets columns q (tile m) and q + 4 (tile m - 1, for q < 2);
+// store(w, value) for w < width.
+template <class S, class Store>
+void merge_patch_columns(const S* __restrict columns, Index column_stride, Index count, Index width,
+                         Store store) {
+  const auto value = [&](Index w) {
+    const Index m = (w + 1) / 4, q = (w + 1) % 4;
+    S sum = m < count ? columns[q * column_stride + m] : S(0);
+    if (q < 2 && m > 0) sum += columns[(q + 4) * column_stride + m - 1];
+    return sum;
   };
-  const S *a0 = a[0], *a1 = a[1], *a2 = a[2], *a3 = a[3];
-  const S *b0 = b[0], *b1 = b[1], *b2 = b[2], *b3 = b[3];
-  out(0, a1[0] + b1[0]);
-  if (width > 1) out(1, a2[0] + b2[0] + (tiles > 1 ? a0[1] + b0[1] : S(0)));
-  // The inner columns, in a loop without the test for keep so that it vectorises.
-  const auto inner = [&](auto masked) {
-    for (Index m = 1; m + 1 < tiles; ++m) {
-      S even = a1[m] + b1[m] + a3[m - 1] + b3[m - 1];
-      S odd = a2[m] + b2[m] + a0[m + 1] + b0[m + 1];
-      if constexpr (decltype(masked)::value) {
-        even = keep[2 * m] > S(0) ? even : S(0);
-        odd = keep[2 * m + 1] > S(0) ? odd : S(0);
-      }
-      row[2 * m] = even;
-      row[2 * m + 1] = odd;
-    }
-  };
-  if (keep == nullptr)
-    inner(std::false_type{});
-  else
-    inner(std::true_type{});
-  if (tiles > 1) {
-    const Index m = tiles - 1;
-    out(2 * m, a1[m] + b1[m] + a3[m - 1] + b3[m - 1]);
-    if (2 * m + 1 < width) out(2 * m + 1, a2[m] + b2[m]);
+  for (Index w = 0; w < std::min<Index>(3, width); ++w) store(w, value(w));
+  const Index inside =
+      std::min(count, width / 4);  // tiles 1 ... inside - 1: columns 3 ... 4 inside - 2
+  CORRMP_INDEPENDENT_TILES
+  for (Index m = 1; m < inside; ++m) {
+    const S* own = columns + m;
+    const S* left = columns + m - 1;
+    store(4 * m - 1, own[0] + left[4 * column_stride]);
+    store(4 * m, own[column_stride] + left[5 * column_stride]);
+    store(4 * m + 1, own[2 * column_stride]);
+    store(4 * m + 2, own[3 * column_stride]);
   }
+  for (Index w = std::max<Index>(3, 4 * inside - 1); w < width; ++w) store(w, value(w));
 }
 
 }  // namespace
@@ -272,22 +232,22 @@ WinogradConv3x3<S>::WinogradConv3x3(Index in_channels, Index out_channels, Index
       height_(height),
       width_(width),
       layout_(layout),
-      tile_rows_((height + 1) / 2),
-      tile_cols_((width + 1) / 2),
-      rows_(Vec<S>::Zero(32 * (tile_rows_ + 1) * (tile_cols_ + 1))) {
+      tile_rows_((height + kTile - 1) / kTile),
+      tile_cols_((width + kTile - 1) / kTile),
+      block_(kPatch * (tile_rows_ + 2) * tile_cols_) {
   if (in_channels < 1 || out_channels < 1 || height < 1 || width < 1)
     throw std::invalid_argument("WinogradConv3x3: empty shape");
+  plane_ = Vec<S>::Zero(4 * block_ + tile_cols_);
+  sums_ = Vec<S>::Zero(4 * block_ + tile_cols_);
+  rows_ = Vec<S>::Zero(kPatch * block_);
+  row_grads_ = Vec<S>::Zero(kPatch * block_);
+  for (Vec<S>& tiles : tiles_) tiles = Vec<S>::Zero(kTerms * tile_rows_ * tile_cols_);
 }
 
 template <class S>
 Index WinogradConv3x3<S>::kernel_index(Index o, Index c, Index i, Index j) const {
   if (layout_ == KernelLayout::kConv) return (o * in_channels_ + c) * 9 + i * 3 + j;
   return (c * out_channels_ + o) * 9 + (2 - i) * 3 + (2 - j);
-}
-
-template <class S>
-S* WinogradConv3x3<S>::scratch(Index k) {
-  return rows_.data() + k * (tile_rows_ + 1) * (tile_cols_ + 1);
 }
 
 template <class S>
@@ -299,25 +259,19 @@ template <class S>
 void WinogradConv3x3<S>::transform_weights(const S* weight) {
   // Row xi: U_xi as Cout x Cin, row-major (and a gap).
   MatMap<S> u = u_.resize(kTerms, term_stride(out_channels_, in_channels_));
-  const S half(0.5);
   for (Index o = 0; o < out_channels_; ++o)
     for (Index c = 0; c < in_channels_; ++c) {
-      S g[3][3], t[4][3];
+      S g[3][3], t[kPatch][3];
       for (Index i = 0; i < 3; ++i)
         for (Index j = 0; j < 3; ++j) g[i][j] = weight[kernel_index(o, c, i, j)];
-      for (Index j = 0; j < 3; ++j) {  // t = G g
-        t[0][j] = g[0][j];
-        t[1][j] = half * (g[0][j] + g[1][j] + g[2][j]);
-        t[2][j] = half * (g[0][j] - g[1][j] + g[2][j]);
-        t[3][j] = g[2][j];
-      }
+      for (int k = 0; k < kPatch; ++k)  // t = G g
+        for (int j = 0; j < 3; ++j)
+          t[k][j] = S(kG[k][0]) * g[0][j] + S(kG[k][1]) * g[1][j] + S(kG[k][2]) * g[2][j];
       const Index pair = o * in_channels_ + c;
-      for (Index r = 0; r < 4; ++r) {  // U = t G^T
-        u(4 * r + 0, pair) = t[r][0];
-        u(4 * r + 1, pair) = half * (t[r][0] + t[r][1] + t[r][2]);
-        u(4 * r + 2, pair) = half * (t[r][0] - t[r][1] + t[r][2]);
-        u(4 * r + 3, pair) = t[r][2];
-      }
+      for (int k = 0; k < kPatch; ++k)  // U = t G^T
+        for (int l = 0; l < kPatch; ++l)
+          u(kPatch * k + l, pair) =
+              t[k][0] * S(kG[l][0]) + t[k][1] * S(kG[l][1]) + t[k][2] * S(kG[l][2]);
     }
 }
 
@@ -328,76 +282,75 @@ Index WinogradConv3x3<S>::chunk_images(Index batch) const {
 }
 
 template <class S>
+S* WinogradConv3x3<S>::plane_row(Vec<S>& plane, Index y) const {
+  return plane.data() + (y % 4) * block_ + (y / 4) * tile_cols_;
+}
+
+template <class S>
 void WinogradConv3x3<S>::transform_inputs(const S* images, Index stride, Index count) {
-  const Index H = height_, W = width_, TW = tile_cols_, T = tile_rows_ * TW;
-  const Index columns = count * T, terms = term_stride(in_channels_, columns);
+  const Index TW = tile_cols_, T = tile_rows_ * TW, columns = count * T;
+  const Index terms = term_stride(in_channels_, columns), column_stride = (tile_rows_ + 2) * TW;
   S* v = v_.resize(kTerms, terms).data();
-  // Padded row k (image row k - 1, zero outside) split by parity into before_k and at_k (rows
-  // TW + 1 apart): the patch of tile (ty, tx) has d[r][q] = before_{2 ty + r}[tx + q / 2] for
-  // even q and at_{2 ty + r}[tx + q / 2] for odd q. The whole channel is split before any tile
-  // reads it.
-  const Index R = 2 * tile_rows_ + 2, row_stride = TW + 1, parity_stride = R * row_stride;
-  S* before = scratch(0);  // R rows, then the R rows of `at`
   for (Index n = 0; n < count; ++n)
     for (Index c = 0; c < in_channels_; ++c) {
-      const S* channel = images + n * stride + c * H * W;
-      for (Index k = 0; k < R; ++k) {
-        const Index h = k - 1;
-        split_padded(h >= 0 && h < H ? channel + h * W : nullptr, W, TW, before + k * row_stride,
-                     before + parity_stride + k * row_stride);
-      }
+      // Plane row h + 1 is image row h; rows 0 and past the image stay zero.
+      const S* channel = images + n * stride + c * height_ * width_;
+      for (Index h = 0; h < height_; ++h)
+        split_patch_columns(channel + h * width_, width_, TW, plane_row(plane_, h + 1),
+                            column_stride);
+      // B^T along the patch rows of all tiles at once (and two rows of tiles past the image),
+      // then along the patch columns.
+      input_1d<S>(block_, Phased<S>{plane_.data(), block_, TW}, rows_.data(), block_);
       S* out = v + c * columns + n * T;  // term xi at out + xi terms
-      for (Index ty = 0; ty < tile_rows_; ++ty)
-        input_tiles(TW, before + 2 * ty * row_stride, row_stride, parity_stride, out + ty * TW,
-                    terms);
+      for (int k = 0; k < kPatch; ++k)
+        input_1d<S>(T, Strided<S>{rows_.data() + k * block_, column_stride},
+                    out + k * kPatch * terms, terms);
     }
 }
 
 template <class S>
 void WinogradConv3x3<S>::transform_output_grads(const S* images, Index stride, Index count) {
-  const Index H = height_, W = width_, TW = tile_cols_, T = tile_rows_ * TW;
-  const Index columns = count * T, terms = term_stride(out_channels_, columns);
+  const Index TW = tile_cols_, T = tile_rows_ * TW, columns = count * T;
+  const Index terms = term_stride(out_channels_, columns);
   S* dm = m_.resize(kTerms, terms).data();
-  // dy(a, b)[ty TW + tx] = dY at (2 ty + a, 2 tx + b) (0 past the image), arrays `split_stride`
-  // apart.
-  const Index split_stride = scratch(1) - scratch(0);
-  const auto dy = [&](Index a, int b) { return scratch(2 * a + b); };
+  S* tiles = tiles_[0].data();         // the 4x4 tiles, entry (i, j) at tiles + (4 i + j) T
+  S* columns_done = tiles_[1].data();  // A applied along each tile column: 6 x 4 per tile
   for (Index n = 0; n < count; ++n)
     for (Index o = 0; o < out_channels_; ++o) {
-      const S* channel = images + n * stride + o * H * W;
-      for (Index h = 0; h < 2 * tile_rows_; ++h) {
-        const Index offset = (h / 2) * TW;
-        split(h < H ? channel + h * W : nullptr, W, TW, dy(h % 2, 0) + offset,
-              dy(h % 2, 1) + offset);
-      }
-      output_grad_tiles(T, dy(0, 0), split_stride, dm + o * columns + n * T, terms);
+      const S* channel = images + n * stride + o * height_ * width_;
+      for (Index h = 0; h < kTile * tile_rows_; ++h)
+        split_row(h < height_ ? channel + h * width_ : nullptr, width_, TW,
+                  tiles + (h % kTile) * kTile * T + (h / kTile) * TW, T);
+      for (int j = 0; j < kTile; ++j)
+        output_grad_1d(T, tiles + j * T, kTile * T, columns_done + j * T, kTile * T);
+      S* out = dm + o * columns + n * T;
+      for (int k = 0; k < kPatch; ++k)
+        output_grad_1d(T, columns_done + k * kTile * T, T, out + k * kPatch * terms, terms);
     }
 }
 
 template <class S>
 void WinogradConv3x3<S>::write_outputs(const S* bias, Index count, S* images, Index stride,
                                        bool relu) {
-  const Index H = height_, W = width_, TW = tile_cols_, T = tile_rows_ * TW;
-  const Index columns = count * T, terms = term_stride(out_channels_, columns);
+  const Index TW = tile_cols_, T = tile_rows_ * TW, columns = count * T;
+  const Index terms = term_stride(out_channels_, columns);
   const S* m = m_.view().data();
-  // y(a, b)[ty TW + tx] = output pixel (2 ty + a, 2 tx + b) before the bias.
-  const Index y_stride = scratch(1) - scratch(0);
-  const auto y = [&](int a, int b) { return scratch(2 * a + b); };
+  S* columns_done = tiles_[0].data();  // A^T applied along each term column: 4 x 6 per tile
+  S* tiles = tiles_[1].data();         // the 4x4 output tiles, entry (i, j) at tiles + (4 i + j) T
+  const S floor = relu ? S(0) : -std::numeric_limits<S>::infinity();
   for (Index n = 0; n < count; ++n)
     for (Index o = 0; o < out_channels_; ++o) {
-      output_tiles(T, m + o * columns + n * T, terms, y(0, 0), y_stride);
-      S* channel = images + n * stride + o * H * W;
+      const S* in = m + o * columns + n * T;
+      for (int l = 0; l < kPatch; ++l)
+        output_1d(T, in + l * terms, kPatch * terms, columns_done + l * T, kPatch * T);
+      for (int i = 0; i < kTile; ++i)
+        output_1d(T, columns_done + i * kPatch * T, T, tiles + i * kTile * T, T);
+      S* channel = images + n * stride + o * height_ * width_;
       const S bias_o = bias[o];
-      for (Index h = 0; h < H; ++h) {
-        S* __restrict row = channel + h * W;
-        const S* ye = y(h % 2, 0) + (h / 2) * TW;
-        const S* yo = y(h % 2, 1) + (h / 2) * TW;
-        const S floor = relu ? S(0) : -std::numeric_limits<S>::infinity();
-        for (Index mm = 0; mm < W / 2; ++mm) {
-          row[2 * mm] = std::max(ye[mm] + bias_o, floor);
-          row[2 * mm + 1] = std::max(yo[mm] + bias_o, floor);
-        }
-        if (W % 2 == 1) row[W - 1] = std::max(ye[TW - 1] + bias_o, floor);
+      for (Index h = 0; h < height_; ++h) {
+        S* __restrict row = channel + h * width_;
+        merge_row(tiles + (h % kTile) * kTile * T + (h / kTile) * TW, T, width_,
+                  [&](Index w, S value) { row[w] = std::max(value + bias_o, floor); });
       }
     }
 }
@@ -405,31 +358,32 @@ void WinogradConv3x3<S>::write_outputs(const S* bias, Index count, S* images, In
 template <class S>
 void WinogradConv3x3<S>::write_input_grads(Index count, S* images, Index stride,
                                            const S* relu_inputs, Index input_stride) {
-  const Index H = height_, W = width_, TW = tile_cols_, T = tile_rows_ * TW;
-  const Index columns = count * T, terms = term_stride(in_channels_, columns);
+  const Index TW = tile_cols_, T = tile_rows_ * TW, columns = count * T;
+  const Index terms = term_stride(in_channels_, columns), column_stride = (tile_rows_ + 2) * TW;
   const S* dv = v_.view().data();
-  // f(r, q)[ty TW + tx] = (B dV B^T)[r][q] of tile (ty, tx), the gradient of input pixel
-  // (2 ty - 1 + r, 2 tx - 1 + q), for all tiles of a channel before they are added up.
-  const Index f_stride = scratch(1) - scratch(0);
-  const auto f = [&](int r, int q) { return scratch(4 * r + q); };
-  S* zeros = scratch(16);
-  std::fill(zeros, zeros + TW + 1, S(0));
   for (Index n = 0; n < count; ++n)
     for (Index c = 0; c < in_channels_; ++c) {
-      input_grad_tiles(T, dv + c * columns + n * T, terms, f(0, 0), f_stride);
-      S* channel = images + n * stride + c * H * W;
-      const S* input = relu_inputs ? relu_inputs + n * input_stride + c * H * W : nullptr;
-      for (Index h = 0; h < H; ++h) {
-        // Padded row h + 1 is patch row r of tile row (h + 1) / 2 and patch row r + 2 of the
-        // tile row above, r = (h + 1) mod 2.
-        const Index below = (h + 1) / 2, above = below - 1, r = (h + 1) % 2;
-        const S* a[4];
-        const S* b[4];
-        for (int q = 0; q < 4; ++q) {
-          a[q] = below < tile_rows_ ? f(r, q) + below * TW : zeros;
-          b[q] = above >= 0 ? f(r + 2, q) + above * TW : zeros;
+      // B along the patch columns (the rows of tiles past the image stay zero), then along the
+      // patch rows into the plane, the overlapping rows added.
+      const S* in = dv + c * columns + n * T;
+      for (int k = 0; k < kPatch; ++k)
+        input_grad_1d(T, in + k * kPatch * terms, terms, row_grads_.data() + k * block_,
+                      column_stride);
+      input_grad_1d_phased(block_, row_grads_.data(), block_, sums_.data(), block_, TW);
+      S* channel = images + n * stride + c * height_ * width_;
+      const S* input =
+          relu_inputs ? relu_inputs + n * input_stride + c * height_ * width_ : nullptr;
+      for (Index h = 0; h < height_; ++h) {
+        S* __restrict row = channel + h * width_;
+        const S* from = plane_row(sums_, h + 1);
+        if (input == nullptr) {
+          merge_patch_columns(from, column_stride, TW, width_,
+                              [&](Index w, S value) { row[w] = value; });
+        } else {
+          const S* __restrict keep = input + h * width_;
+          merge_patch_columns(from, column_stride, TW, width_,
+                              [&](Index w, S value) { row[w] = keep[w] > S(0) ? value : S(0); });
         }
-        overlap_row(W, TW, a, b, input ? input + h * W : nullptr, channel + h * W);
       }
     }
 }
@@ -489,22 +443,22 @@ void WinogradConv3x3<S>::backward(const S* weight, ConstMatRef<S> x, ConstMatRef
                         relu_input ? x.row(first).data() : nullptr, x.outerStride());
   }
   // dL/dg = G^T dU G for every channel pair.
-  const S half(0.5);
   for (Index o = 0; o < cout; ++o)
     for (Index c = 0; c < cin; ++c) {
       const Index pair = o * cin + c;
-      S d[4][4], s[3][4];
-      for (int xi = 0; xi < kTerms; ++xi) d[xi / 4][xi % 4] = du(xi, pair);
-      for (int q = 0; q < 4; ++q) {  // s = G^T dU
-        s[0][q] = d[0][q] + half * (d[1][q] + d[2][q]);
-        s[1][q] = half * (d[1][q] - d[2][q]);
-        s[2][q] = half * (d[1][q] + d[2][q]) + d[3][q];
-      }
-      for (Index i = 0; i < 3; ++i) {  // dg = s G
-        weight_grad[kernel_index(o, c, i, 0)] += s[i][0] + half * (s[i][1] + s[i][2]);
-        weight_grad[kernel_index(o, c, i, 1)] += half * (s[i][1] - s[i][2]);
-        weight_grad[kernel_index(o, c, i, 2)] += half * (s[i][1] + s[i][2]) + s[i][3];
-      }
+      S s[3][kPatch];
+      for (int i = 0; i < 3; ++i)  // s = G^T dU
+        for (int l = 0; l < kPatch; ++l) {
+          S sum(0);
+          for (int k = 0; k < kPatch; ++k) sum += S(kG[k][i]) * du(kPatch * k + l, pair);
+          s[i][l] = sum;
+        }
+      for (int i = 0; i < 3; ++i)  // dg = s G
+        for (int j = 0; j < 3; ++j) {
+          S sum(0);
+          for (int l = 0; l < kPatch; ++l) sum += s[i][l] * S(kG[l][j]);
+          weight_grad[kernel_index(o, c, i, j)] += sum;
+        }
     }
 }
 

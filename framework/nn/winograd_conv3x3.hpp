@@ -1,22 +1,25 @@
-// Winograd convolution F(2x2, 3x3) (Lavin and Gray, "Fast Algorithms for Convolutional Neural
+// Winograd convolution F(4x4, 3x3) (Lavin and Gray, "Fast Algorithms for Convolutional Neural
 // Networks", 2016) for the stride-1, padding-1, 3x3 layers of the autoencoder (paper, Section
 // "Learning the Context": the stride-1 convolutions and their transposed mirrors), which carry
 // most of its multiply-adds. It computes the same convolution as im2col + matrix product
-// (nn/conv2d.hpp, nn/conv_transpose2d.hpp) with 16 products per 2x2 output tile and channel pair
-// instead of 36, the sums being grouped differently (the results agree up to rounding).
+// (nn/conv2d.hpp, nn/conv_transpose2d.hpp) with 36 products per 4x4 output tile and channel pair
+// instead of 144 (F(2x2, 3x3), used before, needs 64), the sums being grouped differently: the
+// results agree up to rounding, about 1e-6 relative in float on the autoencoder's layers.
 //
 // For channels c -> o with 3x3 kernels g_{o,c} (correlation, zero padding 1), an image is cut
-// into 2x2 output tiles; tile t reads the 4x4 input patch d_{c,t} whose top-left pixel is one
-// up and left of the tile's. With
-//   B^T = [1 0 -1 0; 0 1 1 0; 0 -1 1 0; 0 1 0 -1],  G = [1 0 0; .5 .5 .5; .5 -.5 .5; 0 0 1],
-//   A^T = [1 1 1 0; 0 1 -1 -1]
-// and, for each of the 16 entries xi of a 4x4 matrix,
+// into 4x4 output tiles; tile t reads the 6x6 input patch d_{c,t} whose top-left pixel is one
+// up and left of the tile's. With the interpolation points 0, 1, -1, 2, -2 and infinity,
+//   B^T = [4 0 -5 0 1 0; 0 -4 -4 1 1 0; 0 4 -4 -1 1 0; 0 -2 -1 2 1 0; 0 2 -1 -2 1 0;
+//          0 4 0 -5 0 1],
+//   G = [1/4 0 0; -1/6 -1/6 -1/6; -1/6 1/6 -1/6; 1/24 1/12 1/6; 1/24 -1/12 1/6; 0 0 1],
+//   A^T = [1 1 1 1 1 0; 0 1 -1 2 -2 0; 0 1 1 4 4 0; 0 1 -1 8 -8 1]
+// and, for each of the 36 entries xi of a 6x6 matrix,
 //   U_xi[o][c] = (G g_{o,c} G^T)_xi,  V_xi[c][t] = (B^T d_{c,t} B)_xi,  M_xi = U_xi V_xi,
 // output tile t of channel o is A^T M_{.,o,t} A + b_o (rows or columns past the image dropped).
 // Backward, with dM_{.,o,t} = A dY_{o,t} A^T (dY zero past the image):
 //   dU_xi = sum over tiles dM_xi V_xi^T,  dL/dg_{o,c} = G^T dU_{.,o,c} G,
 //   dV_xi = U_xi^T dM_xi,  dL/dx = sum over tiles of B dV_{.,c,t} B^T placed at the patches,
-// the adjoints of the forward steps. The 16 products run on chunks of whole images (tiles side by
+// the adjoints of the forward steps. The 36 products run on chunks of whole images (tiles side by
 // side, like nn/im2col.hpp's chunks), so each is one matrix product per chunk.
 //
 // The weight matrix is read in either layer's layout (KernelLayout); a transposed convolution
@@ -53,9 +56,9 @@ class WinogradConv3x3 {
                 S* dx, Index dx_stride, bool relu_input = false);
 
  private:
-  static constexpr int kTerms = 16;  // entries of a 4x4 tile transform
-  // Scratch array k (room for (tile_rows + 1) (tile_cols + 1) values) of the transforms, k < 32.
-  S* scratch(Index k);
+  static constexpr int kTile = 4;    // output tile side
+  static constexpr int kPatch = 6;   // input patch side, kTile + 2
+  static constexpr int kTerms = 36;  // entries of a 6x6 patch transform
   // Distance between the term matrices of a chunk (channels x columns each).
   static Index term_stride(Index channels, Index columns);
 
@@ -65,6 +68,8 @@ class WinogradConv3x3 {
   void transform_weights(const S* weight);
   // Images of the batch per chunk.
   Index chunk_images(Index batch) const;
+  // Padded row y of a plane laid out as plane_.
+  S* plane_row(Vec<S>& plane, Index y) const;
   // V of `count` images (rows `stride` apart) into v_ (kTerms matrices Cin x count tiles).
   void transform_inputs(const S* images, Index stride, Index count);
   // dM of `count` output-gradient images into m_ (kTerms matrices Cout x count tiles).
@@ -78,13 +83,22 @@ class WinogradConv3x3 {
 
   Index in_channels_, out_channels_, height_, width_;
   KernelLayout layout_;
-  Index tile_rows_, tile_cols_;  // ceil(H / 2), ceil(W / 2)
+  Index tile_rows_, tile_cols_;  // ceil(H / 4), ceil(W / 4)
+  Index block_;                  // 6 (tile_rows + 2) tile_cols, see plane_
   Buffer<S> u_;                  // U
   Buffer<S> v_;                  // V, then dV, of one chunk (kTerms rows, term_stride apart)
   Buffer<S> m_;                  // M or dM of one chunk (likewise)
   Buffer<S> du_;                 // dU summed over the batch
   Buffer<S> transposed_;         // V_xi^T of one chunk (nn/gemm.hpp's scratch)
-  Vec<S> rows_;                  // per-row scratch of the transforms
+  // One channel padded by a zero row on top and a zero column on the left, each row y split into
+  // the six patch columns of its tiles (split_patch_columns) and stored by row phase: column q of
+  // tile tx of padded row y at (y mod 4) block + (q (tile_rows + 2) + y div 4) tile_cols + tx.
+  // So patch row r of every tile is one run, r mod 4 blocks and r div 4 rows of tiles on.
+  Vec<S> plane_;
+  Vec<S> sums_;       // like plane_: the overlapping patches of the input gradient added up
+  Vec<S> rows_;       // B^T applied along the patch rows: 6 blocks like plane_'s
+  Vec<S> row_grads_;  // B applied along the patch columns of dV: 6 blocks, zero past the tiles
+  Vec<S> tiles_[2];   // the output side's transform stages
 };
 
 extern template class WinogradConv3x3<float>;

@@ -47,7 +47,7 @@ struct Shape {
 
 const Shape kShapes[] = {
     {3, 4, 5, 6, 2}, {2, 3, 7, 7, 2}, {2, 2, 1, 1, 3},
-    {2, 3, 2, 3, 2}, {3, 2, 4, 1, 2}, {64, 8, 16, 16, 5},  // chunks of two images
+    {2, 3, 2, 3, 2}, {3, 2, 4, 1, 2}, {64, 8, 16, 16, 5},  // chunks of three images
 };
 
 TEST(WinogradConv3x3, ForwardAndBackwardMatchDirectLoops) {
