@@ -13,8 +13,8 @@
 // matrix of a chunk and dY its output gradient in channel-major order (nn/channel_major.hpp), so
 // each formula above is one matrix product per chunk, summing over all of the chunk's positions
 // at once. Y starts as b 1^T and the product is added to it.
-// Layers with kernel 3, stride 1 and padding 1 compute the same formulas by Winograd's F(2x2, 3x3)
-// (nn/winograd_conv3x3.hpp), with 2.25 times fewer multiply-adds.
+// Layers with kernel 3, stride 1 and padding 1 compute the same formulas by Winograd's F(4x4, 3x3)
+// (nn/winograd_conv3x3.hpp), with 4 times fewer multiply-adds.
 // Initialisation follows torch.nn.Conv2d: W, b ~ U(-1/sqrt(Cin k k), 1/sqrt(Cin k k)), W first.
 // The layer owns only scratch buffers, sized on first use; backward takes the forward input
 // again and recomputes U (cheap next to the products). The products run in nn/gemm.hpp. The

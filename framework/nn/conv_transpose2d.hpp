@@ -14,7 +14,7 @@
 // formula being one matrix product over all of a chunk's pixels, with X and dL/dX in
 // channel-major order (nn/channel_major.hpp); col2im starts Y at b 1^T.
 // With kernel 3, stride 1, padding 1 (and so no output padding) the layer is the convolution with
-// the kernel flipped and the channel roles exchanged, computed by Winograd's F(2x2, 3x3)
+// the kernel flipped and the channel roles exchanged, computed by Winograd's F(4x4, 3x3)
 // (nn/winograd_conv3x3.hpp).
 // Initialisation follows torch.nn.ConvTranspose2d, whose fan_in is computed from weight
 // dimension 1, i.e. fan_in = Cout k k: W, b ~ U(-1/sqrt(Cout k k), 1/sqrt(Cout k k)), W first.

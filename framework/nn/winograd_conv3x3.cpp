@@ -13,6 +13,7 @@
 #include <stdexcept>
 
 #include "nn/gemm.hpp"
+#include "nn/row_phases.hpp"
 
 namespace corrmp::nn {
 namespace {
@@ -155,73 +156,6 @@ void output_grad_1d(Index n, const S* __restrict in, Index in_step, S* __restric
   }
 }
 
-// Splits an image row (`width` values, or zeros when row is null) by column phase:
-// phases[p phase_stride + m] = row[4 m + p] for p < 4 and m < count, 0 past the row.
-template <class S>
-void split_row(const S* __restrict row, Index width, Index count, S* __restrict phases,
-               Index phase_stride) {
-  const Index inside = row == nullptr ? 0 : std::min(count, width / 4);  // groups in the row
-  CORRMP_INDEPENDENT_TILES
-  for (Index m = 0; m < inside; ++m)
-    for (int p = 0; p < 4; ++p) phases[p * phase_stride + m] = row[4 * m + p];
-  for (Index m = inside; m < count; ++m)
-    for (int p = 0; p < 4; ++p)
-      phases[p * phase_stride + m] = row != nullptr && 4 * m + p < width ? row[4 * m + p] : S(0);
-}
-
-// The reverse of split_row: store(w, phases[(w mod 4) phase_stride + w div 4]) for w < width.
-template <class S, class Store>
-void merge_row(const S* __restrict phases, Index phase_stride, Index width, Store store) {
-  const Index inside = width / 4;
-  CORRMP_INDEPENDENT_TILES
-  for (Index m = 0; m < inside; ++m)
-    for (int p = 0; p < 4; ++p) store(4 * m + p, phases[p * phase_stride + m]);
-  for (Index w = 4 * inside; w < width; ++w) store(w, phases[(w % 4) * phase_stride + w / 4]);
-}
-
-// Splits an image row into the six patch columns of its tiles, the row padded by one zero on the
-// left: columns[q column_stride + m] = row[4 m + q - 1] for q < 6 and m < count, 0 outside.
-template <class S>
-void split_patch_columns(const S* __restrict row, Index width, Index count, S* __restrict columns,
-                         Index column_stride) {
-  const auto value = [&](Index w) { return w >= 0 && w < width ? row[w] : S(0); };
-  // Tiles 1 ... inside - 1 read no padding.
-  const Index inside = std::max<Index>(1, std::min(count, (width - 1) / 4));
-  for (int q = 0; q < 6; ++q) columns[q * column_stride] = value(q - 1);
-  CORRMP_INDEPENDENT_TILES
-  for (Index m = 1; m < inside; ++m)
-    for (int q = 0; q < 6; ++q) columns[q * column_stride + m] = row[4 * m + q - 1];
-  for (Index m = inside; m < count; ++m)
-    for (int q = 0; q < 6; ++q) columns[q * column_stride + m] = value(4 * m + q - 1);
-}
-
-// The reverse of split_patch_columns, adding the columns that overlap: image column
-// w = 4 m + q - 1 gets columns q (tile m) and q + 4 (tile m - 1, for q < 2);
-// store(w, value) for w < width.
-template <class S, class Store>
-void merge_patch_columns(const S* __restrict columns, Index column_stride, Index count, Index width,
-                         Store store) {
-  const auto value = [&](Index w) {
-    const Index m = (w + 1) / 4, q = (w + 1) % 4;
-    S sum = m < count ? columns[q * column_stride + m] : S(0);
-    if (q < 2 && m > 0) sum += columns[(q + 4) * column_stride + m - 1];
-    return sum;
-  };
-  for (Index w = 0; w < std::min<Index>(3, width); ++w) store(w, value(w));
-  const Index inside =
-      std::min(count, width / 4);  // tiles 1 ... inside - 1: columns 3 ... 4 inside - 2
-  CORRMP_INDEPENDENT_TILES
-  for (Index m = 1; m < inside; ++m) {
-    const S* own = columns + m;
-    const S* left = columns + m - 1;
-    store(4 * m - 1, own[0] + left[4 * column_stride]);
-    store(4 * m, own[column_stride] + left[5 * column_stride]);
-    store(4 * m + 1, own[2 * column_stride]);
-    store(4 * m + 2, own[3 * column_stride]);
-  }
-  for (Index w = std::max<Index>(3, 4 * inside - 1); w < width; ++w) store(w, value(w));
-}
-
 }  // namespace
 
 template <class S>
@@ -349,8 +283,8 @@ void WinogradConv3x3<S>::write_outputs(const S* bias, Index count, S* images, In
       const S bias_o = bias[o];
       for (Index h = 0; h < height_; ++h) {
         S* __restrict row = channel + h * width_;
-        merge_row(tiles + (h % kTile) * kTile * T + (h / kTile) * TW, T, width_,
-                  [&](Index w, S value) { row[w] = std::max(value + bias_o, floor); });
+        merge_row(tiles + (h % kTile) * kTile * T + (h / kTile) * TW, T, width_, TW, row);
+        for (Index w = 0; w < width_; ++w) row[w] = std::max(row[w] + bias_o, floor);
       }
     }
 }
@@ -375,15 +309,10 @@ void WinogradConv3x3<S>::write_input_grads(Index count, S* images, Index stride,
           relu_inputs ? relu_inputs + n * input_stride + c * height_ * width_ : nullptr;
       for (Index h = 0; h < height_; ++h) {
         S* __restrict row = channel + h * width_;
-        const S* from = plane_row(sums_, h + 1);
-        if (input == nullptr) {
-          merge_patch_columns(from, column_stride, TW, width_,
-                              [&](Index w, S value) { row[w] = value; });
-        } else {
-          const S* __restrict keep = input + h * width_;
-          merge_patch_columns(from, column_stride, TW, width_,
-                              [&](Index w, S value) { row[w] = keep[w] > S(0) ? value : S(0); });
-        }
+        merge_patch_columns(plane_row(sums_, h + 1), column_stride, width_, TW, row);
+        if (input == nullptr) continue;
+        const S* __restrict keep = input + h * width_;
+        for (Index w = 0; w < width_; ++w) row[w] = keep[w] > S(0) ? row[w] : S(0);
       }
     }
 }
