@@ -6,16 +6,16 @@
 // a split over 4 or 8 tiles, and the scalar loops took a sixth of a training step (measured on a
 // Zen 4 EPYC, one thread: 84 -> 73 ms per 32-image step without them). So for float rows whose
 // width is a multiple of 16, each group of 16 pixels (4 tiles) is split or merged with one 4x4
-// transpose of SSE registers; other rows take the scalar loops. Both give the same values.
+// transpose of SSE registers (x86-64; other machines take the scalar loops everywhere); other rows
+// take the scalar loops. Both give the same values.
 #pragma once
 
-#include <algorithm>
 #include <type_traits>
 
 #include "nn/tensor.hpp"
 
-#if defined(__SSSE3__)
-#include <immintrin.h>
+#if defined(__SSE__)
+#include <xmmintrin.h>
 #define CORRMP_ROW_PHASES_SSE 1
 #endif
 
@@ -26,23 +26,18 @@ namespace row_phases_detail {
 #if defined(CORRMP_ROW_PHASES_SSE)
 // {b[3], a[0], a[1], a[2]}: a shifted one lane up, b's last lane coming in.
 inline __m128 shift_in_last(__m128 a, __m128 b) {
-  return _mm_castsi128_ps(_mm_alignr_epi8(_mm_castps_si128(a), _mm_castps_si128(b), 12));
+  const __m128 b3_a0 = _mm_shuffle_ps(b, a, _MM_SHUFFLE(0, 0, 3, 3));  // {b3, b3, a0, a0}
+  return _mm_shuffle_ps(b3_a0, a, _MM_SHUFFLE(2, 1, 2, 0));
 }
 // {a[1], a[2], a[3], b[0]}: a shifted one lane down, b's first lane coming in.
 inline __m128 shift_in_first(__m128 a, __m128 b) {
-  return _mm_castsi128_ps(_mm_alignr_epi8(_mm_castps_si128(b), _mm_castps_si128(a), 4));
+  const __m128 a3_b0 = _mm_shuffle_ps(a, b, _MM_SHUFFLE(0, 0, 3, 3));  // {a3, a3, b0, b0}
+  return _mm_shuffle_ps(a, a3_b0, _MM_SHUFFLE(2, 0, 2, 1));
 }
 #endif
 
-template <class S>
-bool sse_rows(Index width, Index count) {
-#if defined(CORRMP_ROW_PHASES_SSE)
-  return std::is_same_v<S, float> && width == 4 * count && count % 4 == 0;
-#else
-  (void)width, (void)count;
-  return false;
-#endif
-}
+// Rows that the SSE path splits or merges: whole groups of 4 tiles (16 pixels).
+inline bool whole_groups(Index width, Index count) { return width == 4 * count && count % 4 == 0; }
 
 }  // namespace row_phases_detail
 
@@ -53,7 +48,7 @@ void split_row(const S* __restrict row, Index width, Index count, S* __restrict 
                Index phase_stride) {
 #if defined(CORRMP_ROW_PHASES_SSE)
   if constexpr (std::is_same_v<S, float>) {
-    if (row != nullptr && row_phases_detail::sse_rows<S>(width, count)) {
+    if (row != nullptr && row_phases_detail::whole_groups(width, count)) {
       for (Index m = 0; m < count; m += 4) {
         __m128 r0 = _mm_loadu_ps(row + 4 * m), r1 = _mm_loadu_ps(row + 4 * m + 4),
                r2 = _mm_loadu_ps(row + 4 * m + 8), r3 = _mm_loadu_ps(row + 4 * m + 12);
@@ -78,7 +73,7 @@ void merge_row(const S* __restrict phases, Index phase_stride, Index width, Inde
                S* __restrict row) {
 #if defined(CORRMP_ROW_PHASES_SSE)
   if constexpr (std::is_same_v<S, float>) {
-    if (row_phases_detail::sse_rows<S>(width, count)) {
+    if (row_phases_detail::whole_groups(width, count)) {
       for (Index m = 0; m < count; m += 4) {
         __m128 p0 = _mm_loadu_ps(phases + m), p1 = _mm_loadu_ps(phases + phase_stride + m),
                p2 = _mm_loadu_ps(phases + 2 * phase_stride + m),
@@ -104,7 +99,7 @@ void split_patch_columns(const S* __restrict row, Index width, Index count, S* _
                          Index column_stride) {
 #if defined(CORRMP_ROW_PHASES_SSE)
   if constexpr (std::is_same_v<S, float>) {
-    if (row_phases_detail::sse_rows<S>(width, count)) {
+    if (row_phases_detail::whole_groups(width, count)) {
       using row_phases_detail::shift_in_first, row_phases_detail::shift_in_last;
       const __m128 zero = _mm_setzero_ps();
       __m128 last_col4 = zero, last_col1 = zero;
@@ -142,7 +137,7 @@ void merge_patch_columns(const S* __restrict columns, Index column_stride, Index
                          S* __restrict row) {
 #if defined(CORRMP_ROW_PHASES_SSE)
   if constexpr (std::is_same_v<S, float>) {
-    if (row_phases_detail::sse_rows<S>(width, count)) {
+    if (row_phases_detail::whole_groups(width, count)) {
       using row_phases_detail::shift_in_first, row_phases_detail::shift_in_last;
       const __m128 zero = _mm_setzero_ps();
       const S* col0 = columns;

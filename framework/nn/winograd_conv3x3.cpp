@@ -168,14 +168,14 @@ WinogradConv3x3<S>::WinogradConv3x3(Index in_channels, Index out_channels, Index
       layout_(layout),
       tile_rows_((height + kTile - 1) / kTile),
       tile_cols_((width + kTile - 1) / kTile),
-      block_(kPatch * (tile_rows_ + 2) * tile_cols_) {
+      block_(kPatch * (tile_rows_ + 1) * tile_cols_) {
   if (in_channels < 1 || out_channels < 1 || height < 1 || width < 1)
     throw std::invalid_argument("WinogradConv3x3: empty shape");
-  plane_ = Vec<S>::Zero(4 * block_ + tile_cols_);
-  sums_ = Vec<S>::Zero(4 * block_ + tile_cols_);
+  plane_ = Vec<S>::Zero(4 * block_);
+  sums_ = Vec<S>::Zero(4 * block_);
   rows_ = Vec<S>::Zero(kPatch * block_);
   row_grads_ = Vec<S>::Zero(kPatch * block_);
-  for (Vec<S>& tiles : tiles_) tiles = Vec<S>::Zero(kTerms * tile_rows_ * tile_cols_);
+  for (Vec<S>& tiles : tiles_) tiles = Vec<S>::Zero(kPatch * kTile * tile_rows_ * tile_cols_);
 }
 
 template <class S>
@@ -223,7 +223,7 @@ S* WinogradConv3x3<S>::plane_row(Vec<S>& plane, Index y) const {
 template <class S>
 void WinogradConv3x3<S>::transform_inputs(const S* images, Index stride, Index count) {
   const Index TW = tile_cols_, T = tile_rows_ * TW, columns = count * T;
-  const Index terms = term_stride(in_channels_, columns), column_stride = (tile_rows_ + 2) * TW;
+  const Index terms = term_stride(in_channels_, columns), column_stride = (tile_rows_ + 1) * TW;
   S* v = v_.resize(kTerms, terms).data();
   for (Index n = 0; n < count; ++n)
     for (Index c = 0; c < in_channels_; ++c) {
@@ -232,7 +232,7 @@ void WinogradConv3x3<S>::transform_inputs(const S* images, Index stride, Index c
       for (Index h = 0; h < height_; ++h)
         split_patch_columns(channel + h * width_, width_, TW, plane_row(plane_, h + 1),
                             column_stride);
-      // B^T along the patch rows of all tiles at once (and two rows of tiles past the image),
+      // B^T along the patch rows of all tiles at once (and a row of tiles past the image),
       // then along the patch columns.
       input_1d<S>(block_, Phased<S>{plane_.data(), block_, TW}, rows_.data(), block_);
       S* out = v + c * columns + n * T;  // term xi at out + xi terms
@@ -293,7 +293,7 @@ template <class S>
 void WinogradConv3x3<S>::write_input_grads(Index count, S* images, Index stride,
                                            const S* relu_inputs, Index input_stride) {
   const Index TW = tile_cols_, T = tile_rows_ * TW, columns = count * T;
-  const Index terms = term_stride(in_channels_, columns), column_stride = (tile_rows_ + 2) * TW;
+  const Index terms = term_stride(in_channels_, columns), column_stride = (tile_rows_ + 1) * TW;
   const S* dv = v_.view().data();
   for (Index n = 0; n < count; ++n)
     for (Index c = 0; c < in_channels_; ++c) {

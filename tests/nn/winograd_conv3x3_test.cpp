@@ -1,6 +1,6 @@
 // Tests of nn/winograd_conv3x3.hpp against direct convolution loops: forward in both kernel
 // layouts, the backward formulas (weight, bias and input gradients), odd and tiny image sizes,
-// batches cut into several chunks, and the fused ReLU (nn/relu_fusion.hpp).
+// batches cut into several chunks, the fused ReLU (nn/relu_fusion.hpp), and float against double.
 #include "nn/winograd_conv3x3.hpp"
 
 #include <gtest/gtest.h>
@@ -126,6 +126,46 @@ TEST(WinogradConv3x3, FloatAgreesWithDouble) {
   cd.forward(w.data(), b.data(), x, yd);
   cf.forward(wf.data(), bf.data(), xf, yf);
   EXPECT_LE((yf.cast<double>() - yd).cwiseAbs().maxCoeff(), 1e-5);
+}
+
+// The float path (where rows of 16 or 32 pixels are split and merged with SSE, nn/row_phases.hpp)
+// against double, forward and backward, with and without the fused ReLUs.
+TEST(WinogradConv3x3, FloatForwardAndBackwardAgreeWithDouble) {
+  Rng rng(64);
+  const Shape shapes[] = {{16, 16, 16, 16, 2}, {8, 8, 32, 32, 2}};
+  for (const Shape& s : shapes)
+    for (const bool relu : {false, true}) {
+      WinogradConv3x3<double> cd(s.cin, s.cout, s.height, s.width, KernelLayout::kConv);
+      WinogradConv3x3<float> cf(s.cin, s.cout, s.height, s.width, KernelLayout::kConv);
+      const Index in = s.cin * s.height * s.width, out = s.cout * s.height * s.width;
+      const MatD w = testing::random_matrix(s.cout, s.cin * 9, rng, -0.1, 0.1);
+      const Vec<double> b = testing::random_matrix(s.cout, 1, rng, -0.1, 0.1);
+      const MatD x =
+          testing::random_matrix(s.batch, in, rng, -1.0, 1.0).cwiseMax(relu ? 0.0 : -1.0);
+      const MatD dy = testing::random_matrix(s.batch, out, rng, -1.0, 1.0);
+      const Mat<float> wf = w.cast<float>(), xf = x.cast<float>(), dyf = dy.cast<float>();
+      const Vec<float> bf = b.cast<float>();
+      const auto close = [](const auto& f, const auto& d) {
+        return (f.template cast<double>() - d).cwiseAbs().maxCoeff() <=
+               1e-5 * d.cwiseAbs().maxCoeff();
+      };
+
+      MatD yd(s.batch, out);
+      Mat<float> yf(s.batch, out);
+      cd.forward(w.data(), b.data(), x, yd, relu);
+      cf.forward(wf.data(), bf.data(), xf, yf, relu);
+      EXPECT_TRUE(close(yf, yd)) << s.width << " relu " << relu;
+
+      MatD dwd = MatD::Zero(s.cout, s.cin * 9), dxd(s.batch, in);
+      Mat<float> dwf = Mat<float>::Zero(s.cout, s.cin * 9), dxf(s.batch, in);
+      Vec<double> dbd = Vec<double>::Zero(s.cout);
+      Vec<float> dbf = Vec<float>::Zero(s.cout);
+      cd.backward(w.data(), x, dy, dwd.data(), dbd.data(), dxd.data(), in, relu);
+      cf.backward(wf.data(), xf, dyf, dwf.data(), dbf.data(), dxf.data(), in, relu);
+      EXPECT_TRUE(close(dwf, dwd)) << s.width << " relu " << relu;
+      EXPECT_TRUE(close(dbf, dbd)) << s.width << " relu " << relu;
+      EXPECT_TRUE(close(dxf, dxd)) << s.width << " relu " << relu;
+    }
 }
 
 }  // namespace
