@@ -34,6 +34,23 @@ inline __m128 shift_in_first(__m128 a, __m128 b) {
   const __m128 a3_b0 = _mm_shuffle_ps(a, b, _MM_SHUFFLE(0, 0, 3, 3));  // {a3, a3, b0, b0}
   return _mm_shuffle_ps(a, a3_b0, _MM_SHUFFLE(2, 0, 2, 1));
 }
+// The 16 values at in as 4 tiles' 4 pixels, by pixel: r[j] = {in[j], in[4 + j], in[8 + j],
+// in[12 + j]}.
+inline void load_transposed(const float* in, __m128 (&r)[4]) {
+  r[0] = _mm_loadu_ps(in);
+  r[1] = _mm_loadu_ps(in + 4);
+  r[2] = _mm_loadu_ps(in + 8);
+  r[3] = _mm_loadu_ps(in + 12);
+  _MM_TRANSPOSE4_PS(r[0], r[1], r[2], r[3]);
+}
+// The reverse: pixel j of 4 tiles in r[j], stored as 16 values at out.
+inline void store_transposed(__m128 r0, __m128 r1, __m128 r2, __m128 r3, float* out) {
+  _MM_TRANSPOSE4_PS(r0, r1, r2, r3);
+  _mm_storeu_ps(out, r0);
+  _mm_storeu_ps(out + 4, r1);
+  _mm_storeu_ps(out + 8, r2);
+  _mm_storeu_ps(out + 12, r3);
+}
 #endif
 
 // Rows that the SSE path splits or merges: whole groups of 4 tiles (16 pixels).
@@ -50,13 +67,9 @@ void split_row(const S* __restrict row, Index width, Index count, S* __restrict 
   if constexpr (std::is_same_v<S, float>) {
     if (row != nullptr && row_phases_detail::whole_groups(width, count)) {
       for (Index m = 0; m < count; m += 4) {
-        __m128 r0 = _mm_loadu_ps(row + 4 * m), r1 = _mm_loadu_ps(row + 4 * m + 4),
-               r2 = _mm_loadu_ps(row + 4 * m + 8), r3 = _mm_loadu_ps(row + 4 * m + 12);
-        _MM_TRANSPOSE4_PS(r0, r1, r2, r3);
-        _mm_storeu_ps(phases + m, r0);
-        _mm_storeu_ps(phases + phase_stride + m, r1);
-        _mm_storeu_ps(phases + 2 * phase_stride + m, r2);
-        _mm_storeu_ps(phases + 3 * phase_stride + m, r3);
+        __m128 pixels[4];
+        row_phases_detail::load_transposed(row + 4 * m, pixels);
+        for (int p = 0; p < 4; ++p) _mm_storeu_ps(phases + p * phase_stride + m, pixels[p]);
       }
       return;
     }
@@ -74,16 +87,11 @@ void merge_row(const S* __restrict phases, Index phase_stride, Index width, Inde
 #if defined(CORRMP_ROW_PHASES_SSE)
   if constexpr (std::is_same_v<S, float>) {
     if (row_phases_detail::whole_groups(width, count)) {
-      for (Index m = 0; m < count; m += 4) {
-        __m128 p0 = _mm_loadu_ps(phases + m), p1 = _mm_loadu_ps(phases + phase_stride + m),
-               p2 = _mm_loadu_ps(phases + 2 * phase_stride + m),
-               p3 = _mm_loadu_ps(phases + 3 * phase_stride + m);
-        _MM_TRANSPOSE4_PS(p0, p1, p2, p3);
-        _mm_storeu_ps(row + 4 * m, p0);
-        _mm_storeu_ps(row + 4 * m + 4, p1);
-        _mm_storeu_ps(row + 4 * m + 8, p2);
-        _mm_storeu_ps(row + 4 * m + 12, p3);
-      }
+      for (Index m = 0; m < count; m += 4)
+        row_phases_detail::store_transposed(
+            _mm_loadu_ps(phases + m), _mm_loadu_ps(phases + phase_stride + m),
+            _mm_loadu_ps(phases + 2 * phase_stride + m),
+            _mm_loadu_ps(phases + 3 * phase_stride + m), row + 4 * m);
       return;
     }
   }
@@ -104,13 +112,10 @@ void split_patch_columns(const S* __restrict row, Index width, Index count, S* _
       const __m128 zero = _mm_setzero_ps();
       __m128 last_col4 = zero, last_col1 = zero;
       for (Index m = 0; m < count; m += 4) {
-        __m128 c1 = _mm_loadu_ps(row + 4 * m), c2 = _mm_loadu_ps(row + 4 * m + 4),
-               c3 = _mm_loadu_ps(row + 4 * m + 8), c4 = _mm_loadu_ps(row + 4 * m + 12);
-        _MM_TRANSPOSE4_PS(c1, c2, c3, c4);  // column q + 1 = pixel 4 m + q of tile m
-        _mm_storeu_ps(columns + column_stride + m, c1);
-        _mm_storeu_ps(columns + 2 * column_stride + m, c2);
-        _mm_storeu_ps(columns + 3 * column_stride + m, c3);
-        _mm_storeu_ps(columns + 4 * column_stride + m, c4);
+        __m128 pixels[4];  // column q + 1 of tile m is pixel 4 m + q
+        row_phases_detail::load_transposed(row + 4 * m, pixels);
+        for (int q = 0; q < 4; ++q) _mm_storeu_ps(columns + (q + 1) * column_stride + m, pixels[q]);
+        const __m128 c1 = pixels[0], c4 = pixels[3];
         // Column 0 of tile m is column 4 of tile m - 1; column 5 is column 1 of tile m + 1.
         _mm_storeu_ps(columns + m, shift_in_last(c4, last_col4));
         if (m > 0)
@@ -147,17 +152,14 @@ void merge_patch_columns(const S* __restrict columns, Index column_stride, Index
         // column 0 of tile m + 1 for j = 3.
         const __m128 before5 = m > 0 ? _mm_loadu_ps(col5 + m - 4) : zero;
         const __m128 after0 = m + 4 < count ? _mm_loadu_ps(col0 + m + 4) : zero;
-        __m128 p0 = _mm_add_ps(_mm_loadu_ps(columns + column_stride + m),
-                               shift_in_last(_mm_loadu_ps(col5 + m), before5));
-        __m128 p1 = _mm_loadu_ps(columns + 2 * column_stride + m);
-        __m128 p2 = _mm_loadu_ps(columns + 3 * column_stride + m);
-        __m128 p3 = _mm_add_ps(_mm_loadu_ps(columns + 4 * column_stride + m),
-                               shift_in_first(_mm_loadu_ps(col0 + m), after0));
-        _MM_TRANSPOSE4_PS(p0, p1, p2, p3);
-        _mm_storeu_ps(row + 4 * m, p0);
-        _mm_storeu_ps(row + 4 * m + 4, p1);
-        _mm_storeu_ps(row + 4 * m + 8, p2);
-        _mm_storeu_ps(row + 4 * m + 12, p3);
+        row_phases_detail::store_transposed(
+            _mm_add_ps(_mm_loadu_ps(columns + column_stride + m),
+                       shift_in_last(_mm_loadu_ps(col5 + m), before5)),
+            _mm_loadu_ps(columns + 2 * column_stride + m),
+            _mm_loadu_ps(columns + 3 * column_stride + m),
+            _mm_add_ps(_mm_loadu_ps(columns + 4 * column_stride + m),
+                       shift_in_first(_mm_loadu_ps(col0 + m), after0)),
+            row + 4 * m);
       }
       return;
     }
