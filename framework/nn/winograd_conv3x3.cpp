@@ -176,6 +176,7 @@ WinogradConv3x3<S>::WinogradConv3x3(Index in_channels, Index out_channels, Index
   rows_ = Vec<S>::Zero(kPatch * block_);
   row_grads_ = Vec<S>::Zero(kPatch * block_);
   for (Vec<S>& tiles : tiles_) tiles = Vec<S>::Zero(kPatch * kTile * tile_rows_ * tile_cols_);
+  pair_scratch_ = Vec<S>::Zero(27 * in_channels);
 }
 
 template <class S>
@@ -192,21 +193,29 @@ Index WinogradConv3x3<S>::term_stride(Index channels, Index columns) {
 template <class S>
 void WinogradConv3x3<S>::transform_weights(const S* weight) {
   // Row xi: U_xi as Cout x Cin, row-major (and a gap).
+  // One output channel's pairs at a time, each step a loop over the input channels c.
   MatMap<S> u = u_.resize(kTerms, term_stride(out_channels_, in_channels_));
-  for (Index o = 0; o < out_channels_; ++o)
-    for (Index c = 0; c < in_channels_; ++c) {
-      S g[3][3], t[kPatch][3];
-      for (Index i = 0; i < 3; ++i)
-        for (Index j = 0; j < 3; ++j) g[i][j] = weight[kernel_index(o, c, i, j)];
-      for (int k = 0; k < kPatch; ++k)  // t = G g
-        for (int j = 0; j < 3; ++j)
-          t[k][j] = S(kG[k][0]) * g[0][j] + S(kG[k][1]) * g[1][j] + S(kG[k][2]) * g[2][j];
-      const Index pair = o * in_channels_ + c;
-      for (int k = 0; k < kPatch; ++k)  // U = t G^T
-        for (int l = 0; l < kPatch; ++l)
-          u(kPatch * k + l, pair) =
-              t[k][0] * S(kG[l][0]) + t[k][1] * S(kG[l][1]) + t[k][2] * S(kG[l][2]);
-    }
+  const Index cin = in_channels_;
+  S* g = pair_scratch_.data();  // g_{o,c}[i][j] at g[(3 i + j) cin + c]
+  S* t = g + 9 * cin;           // (G g_{o,c})[k][j] at t[(3 k + j) cin + c]
+  for (Index o = 0; o < out_channels_; ++o) {
+    for (Index i = 0; i < 3; ++i)
+      for (Index j = 0; j < 3; ++j)
+        for (Index c = 0; c < cin; ++c) g[(3 * i + j) * cin + c] = weight[kernel_index(o, c, i, j)];
+    for (int k = 0; k < kPatch; ++k)  // t = G g
+      for (int j = 0; j < 3; ++j)
+        for (Index c = 0; c < cin; ++c)
+          t[(3 * k + j) * cin + c] = S(kG[k][0]) * g[j * cin + c] +
+                                     S(kG[k][1]) * g[(3 + j) * cin + c] +
+                                     S(kG[k][2]) * g[(6 + j) * cin + c];
+    for (int k = 0; k < kPatch; ++k)  // U = t G^T
+      for (int l = 0; l < kPatch; ++l) {
+        S* out = &u(kPatch * k + l, o * cin);
+        for (Index c = 0; c < cin; ++c)
+          out[c] = t[3 * k * cin + c] * S(kG[l][0]) + t[(3 * k + 1) * cin + c] * S(kG[l][1]) +
+                   t[(3 * k + 2) * cin + c] * S(kG[l][2]);
+      }
+  }
 }
 
 template <class S>
@@ -371,24 +380,24 @@ void WinogradConv3x3<S>::backward(const S* weight, ConstMatRef<S> x, ConstMatRef
       write_input_grads(count, dx + first * dx_stride, dx_stride,
                         relu_input ? x.row(first).data() : nullptr, x.outerStride());
   }
-  // dL/dg = G^T dU G for every channel pair.
-  for (Index o = 0; o < cout; ++o)
-    for (Index c = 0; c < cin; ++c) {
-      const Index pair = o * cin + c;
-      S s[3][kPatch];
-      for (int i = 0; i < 3; ++i)  // s = G^T dU
-        for (int l = 0; l < kPatch; ++l) {
+  // dL/dg = G^T dU G for every channel pair, an output channel's pairs at a time.
+  S* s = pair_scratch_.data();  // (G^T dU_{o,c})[i][l] at s[(6 i + l) cin + c]
+  for (Index o = 0; o < cout; ++o) {
+    for (int i = 0; i < 3; ++i)  // s = G^T dU
+      for (int l = 0; l < kPatch; ++l)
+        for (Index c = 0; c < cin; ++c) {
           S sum(0);
-          for (int k = 0; k < kPatch; ++k) sum += S(kG[k][i]) * du(kPatch * k + l, pair);
-          s[i][l] = sum;
+          for (int k = 0; k < kPatch; ++k) sum += S(kG[k][i]) * du(kPatch * k + l, o * cin + c);
+          s[(kPatch * i + l) * cin + c] = sum;
         }
-      for (int i = 0; i < 3; ++i)  // dg = s G
-        for (int j = 0; j < 3; ++j) {
+    for (int i = 0; i < 3; ++i)  // dg = s G
+      for (int j = 0; j < 3; ++j)
+        for (Index c = 0; c < cin; ++c) {
           S sum(0);
-          for (int l = 0; l < kPatch; ++l) sum += s[i][l] * S(kG[l][j]);
+          for (int l = 0; l < kPatch; ++l) sum += s[(kPatch * i + l) * cin + c] * S(kG[l][j]);
           weight_grad[kernel_index(o, c, i, j)] += sum;
         }
-    }
+  }
 }
 
 template class WinogradConv3x3<float>;

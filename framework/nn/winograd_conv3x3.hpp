@@ -95,10 +95,11 @@ class WinogradConv3x3 {
   // tile tx of padded row y at (y mod 4) block + (q (tile_rows + 1) + y div 4) tile_cols + tx.
   // So patch row r of every tile is one run, r mod 4 blocks and r div 4 rows of tiles on.
   Vec<S> plane_;
-  Vec<S> sums_;       // like plane_: the overlapping patches of the input gradient added up
-  Vec<S> rows_;       // B^T applied along the patch rows: 6 blocks like plane_'s
-  Vec<S> row_grads_;  // B applied along the patch columns of dV: 6 blocks, zero past the tiles
-  Vec<S> tiles_[2];   // the output side's transform stages
+  Vec<S> sums_;          // like plane_: the overlapping patches of the input gradient added up
+  Vec<S> rows_;          // B^T applied along the patch rows: 6 blocks like plane_'s
+  Vec<S> row_grads_;     // B applied along the patch columns of dV: 6 blocks, zero past the tiles
+  Vec<S> tiles_[2];      // the output side's transform stages
+  Vec<S> pair_scratch_;  // the weight transforms' stages for one output channel's pairs
 };
 
 extern template class WinogradConv3x3<float>;
