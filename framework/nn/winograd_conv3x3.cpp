@@ -1,11 +1,14 @@
 // Winograd F(4x4, 3x3) convolution (formulas in nn/winograd_conv3x3.hpp).
 //
 // Tile t of image n is (tile row ty, tile column tx), column n T + ty TW + tx of the chunk's
-// matrices (T = TH TW tiles per image). A channel is first copied into a plane padded by one zero
-// row and column on top and left (and zeros past the image up to whole tiles), and its tiles'
-// patches gathered side by side: entry (r, q) of every tile's patch is one contiguous run over t.
-// The 2-D transforms are then 1-D transforms along the patch columns and then the rows (or the
-// reverse), each a loop over t that vectorises.
+// matrices (T = TH TW tiles per image). Input side (6x6 patches overlapping by two pixels): each
+// image row is split into the six patch columns of its 4-pixel tiles (split_patch_columns, one
+// zero on the left) and stored by row phase in a plane with a zero row on top (plane_): entry
+// (r, q) of every tile's patch is then one contiguous run over t, patch rows r and r + 4 one row
+// of tiles apart. B^T runs along the patch rows over the whole plane at once, then along the
+// patch columns over all tiles. Output side (4x4 tiles, no overlap): rows are split by column
+// phase (split_row), entry (i, j) of every tile one run. Each 1-D transform is a loop over tiles
+// that vectorises.
 #include "nn/winograd_conv3x3.hpp"
 
 #include <algorithm>
