@@ -171,7 +171,8 @@ WinogradConv3x3<S>::WinogradConv3x3(Index in_channels, Index out_channels, Index
       layout_(layout),
       tile_rows_((height + kTile - 1) / kTile),
       tile_cols_((width + kTile - 1) / kTile),
-      block_(kPatch * (tile_rows_ + 1) * tile_cols_) {
+      column_stride_((tile_rows_ + 1) * tile_cols_),
+      block_(kPatch * column_stride_) {
   if (in_channels < 1 || out_channels < 1 || height < 1 || width < 1)
     throw std::invalid_argument("WinogradConv3x3: empty shape");
   plane_ = Vec<S>::Zero(4 * block_);
@@ -235,7 +236,7 @@ S* WinogradConv3x3<S>::plane_row(Vec<S>& plane, Index y) const {
 template <class S>
 void WinogradConv3x3<S>::transform_inputs(const S* images, Index stride, Index count) {
   const Index TW = tile_cols_, T = tile_rows_ * TW, columns = count * T;
-  const Index terms = term_stride(in_channels_, columns), column_stride = (tile_rows_ + 1) * TW;
+  const Index terms = term_stride(in_channels_, columns);
   S* v = v_.resize(kTerms, terms).data();
   for (Index n = 0; n < count; ++n)
     for (Index c = 0; c < in_channels_; ++c) {
@@ -243,13 +244,13 @@ void WinogradConv3x3<S>::transform_inputs(const S* images, Index stride, Index c
       const S* channel = images + n * stride + c * height_ * width_;
       for (Index h = 0; h < height_; ++h)
         split_patch_columns(channel + h * width_, width_, TW, plane_row(plane_, h + 1),
-                            column_stride);
+                            column_stride_);
       // B^T along the patch rows of all tiles at once (and a row of tiles past the image),
       // then along the patch columns.
       input_1d<S>(block_, Phased<S>{plane_.data(), block_, TW}, rows_.data(), block_);
       S* out = v + c * columns + n * T;  // term xi at out + xi terms
       for (int k = 0; k < kPatch; ++k)
-        input_1d<S>(T, Strided<S>{rows_.data() + k * block_, column_stride},
+        input_1d<S>(T, Strided<S>{rows_.data() + k * block_, column_stride_},
                     out + k * kPatch * terms, terms);
     }
 }
@@ -305,7 +306,7 @@ template <class S>
 void WinogradConv3x3<S>::write_input_grads(Index count, S* images, Index stride,
                                            const S* relu_inputs, Index input_stride) {
   const Index TW = tile_cols_, T = tile_rows_ * TW, columns = count * T;
-  const Index terms = term_stride(in_channels_, columns), column_stride = (tile_rows_ + 1) * TW;
+  const Index terms = term_stride(in_channels_, columns);
   const S* dv = v_.view().data();
   for (Index n = 0; n < count; ++n)
     for (Index c = 0; c < in_channels_; ++c) {
@@ -314,14 +315,14 @@ void WinogradConv3x3<S>::write_input_grads(Index count, S* images, Index stride,
       const S* in = dv + c * columns + n * T;
       for (int k = 0; k < kPatch; ++k)
         input_grad_1d(T, in + k * kPatch * terms, terms, row_grads_.data() + k * block_,
-                      column_stride);
+                      column_stride_);
       input_grad_1d_phased(block_, row_grads_.data(), block_, sums_.data(), block_, TW);
       S* channel = images + n * stride + c * height_ * width_;
       const S* input =
           relu_inputs ? relu_inputs + n * input_stride + c * height_ * width_ : nullptr;
       for (Index h = 0; h < height_; ++h) {
         S* __restrict row = channel + h * width_;
-        merge_patch_columns(plane_row(sums_, h + 1), column_stride, width_, TW, row);
+        merge_patch_columns(plane_row(sums_, h + 1), column_stride_, width_, TW, row);
         if (input == nullptr) continue;
         const S* __restrict keep = input + h * width_;
         for (Index w = 0; w < width_; ++w) row[w] = keep[w] > S(0) ? row[w] : S(0);

@@ -84,7 +84,8 @@ class WinogradConv3x3 {
   Index in_channels_, out_channels_, height_, width_;
   KernelLayout layout_;
   Index tile_rows_, tile_cols_;  // ceil(H / 4), ceil(W / 4)
-  Index block_;                  // 6 (tile_rows + 1) tile_cols, see plane_
+  Index column_stride_;          // (tile_rows + 1) tile_cols: one patch column's run, see plane_
+  Index block_;                  // 6 column_stride_: one row phase of plane_
   Buffer<S> u_;                  // U
   Buffer<S> v_;                  // V, then dV, of one chunk (kTerms rows, term_stride apart)
   Buffer<S> m_;                  // M or dM of one chunk (likewise)
