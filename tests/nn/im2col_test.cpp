@@ -127,6 +127,26 @@ TEST(Im2col, MatchesItsDefinitionOnEveryPath) {
   }
 }
 
+// Float rows of the kernel 3 / stride 2 / padding 1 path, which x86-64 builds with AVX-512 unfold
+// and fold 16 outputs at a time: every row width around the vector's (1 to 40 outputs), values
+// that float holds exactly, so the folded sums are exact too.
+TEST(Im2col, FloatStrideTwoRowsMatchTheDefinition) {
+  Rng rng(43);
+  for (Index wo = 1; wo <= 40; ++wo) {
+    const PatchGeometry g = conv_patch_geometry({2, 6, 2 * wo}, 3, 2, 1);
+    MatD x = testing::random_matrix(1, g.image.size(), rng);
+    MatD y = testing::random_matrix(g.patch_size(), g.positions(), rng);
+    x = (x * 64.0).array().round() / 64.0;
+    y = (y * 64.0).array().round() / 64.0;
+    const Mat<float> xf = x.cast<float>(), yf = y.cast<float>();
+    Mat<float> cols(g.patch_size(), g.positions()), folded(1, g.image.size());
+    im2col(xf.data(), g, cols.data());
+    EXPECT_EQ(cols.cast<double>(), naive_im2col(x.data(), g)) << wo;
+    col2im(yf.data(), g, folded.data());
+    EXPECT_EQ(folded.cast<double>(), naive_col2im(y, g)) << wo;
+  }
+}
+
 // Batches whose chunks hold several whole images and whose chunks split images into row runs.
 TEST(Im2col, ChunksCoverTheBatchAndMatchPerImageUnfolding) {
   Rng rng(42);
