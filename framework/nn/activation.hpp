@@ -61,10 +61,10 @@ struct LeakyRelu {
 
 template <class S>
 struct Sigmoid {
-  // Eigen's logistic: vectorised, and for float a rational fit within 2 ulps of 1 everywhere,
-  // switching to exp(x) below -9 so it never overflows; outputs under 3e-4 keep only a relative
-  // accuracy of 3e-4 (tests/nn/activation_test.cpp). One scalar std::exp per pixel had made the
-  // autoencoder's output layer 2% of a training step.
+  // Eigen's logistic, vectorised. For float it is a rational fit on [-9, 15.7] (1 above, exp(x)
+  // below), accurate to about one float ulp of 1 in absolute terms, so outputs under 1e-3 are
+  // accurate only to about 1e-3 of themselves (tests/nn/activation_test.cpp). One scalar
+  // std::exp per value had made the autoencoder's output layer 2% of a training step.
   void forward(ConstMatRef<S> x, MatRef<S> y) const { y = x.array().logistic().matrix(); }
   void backward(ConstMatRef<S> y, ConstMatRef<S> dy, MatRef<S> dx) const {
     dx = (dy.array() * y.array() * (S(1) - y.array())).matrix();

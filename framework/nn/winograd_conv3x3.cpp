@@ -280,7 +280,7 @@ template <class S>
 void WinogradConv3x3<S>::write_outputs(const S* bias, Index count, S* images, Index stride,
                                        bool relu) {
   const Index TW = tile_cols_, T = tile_rows_ * TW, columns = count * T;
-  const Index terms = term_stride(out_channels_, columns);
+  const Index terms = term_stride(out_channels_, columns), pixels = height_ * width_;
   const S* m = m_.view().data();
   S* columns_done = tiles_[0].data();  // A^T applied along each term column: 4 x 6 per tile
   S* tiles = tiles_[1].data();         // the 4x4 output tiles, entry (i, j) at tiles + (4 i + j) T
@@ -299,8 +299,7 @@ void WinogradConv3x3<S>::write_outputs(const S* bias, Index count, S* images, In
       // Once the channel is merged: reading a row right after merge_row's narrower stores
       // would stall on them (store forwarding fails), which cost 2% of a training step.
       const S bias_o = bias[o];
-      for (Index i = 0; i < height_ * width_; ++i)
-        channel[i] = std::max(channel[i] + bias_o, floor);
+      for (Index i = 0; i < pixels; ++i) channel[i] = std::max(channel[i] + bias_o, floor);
     }
 }
 
@@ -308,7 +307,7 @@ template <class S>
 void WinogradConv3x3<S>::write_input_grads(Index count, S* images, Index stride,
                                            const S* relu_inputs, Index input_stride) {
   const Index TW = tile_cols_, T = tile_rows_ * TW, columns = count * T;
-  const Index terms = term_stride(in_channels_, columns);
+  const Index terms = term_stride(in_channels_, columns), pixels = height_ * width_;
   const S* dv = v_.view().data();
   for (Index n = 0; n < count; ++n)
     for (Index c = 0; c < in_channels_; ++c) {
@@ -326,7 +325,7 @@ void WinogradConv3x3<S>::write_input_grads(Index count, S* images, Index stride,
       if (relu_inputs == nullptr) continue;
       // Masked once the channel is merged, for the reason in write_outputs.
       const S* __restrict keep = relu_inputs + n * input_stride + c * height_ * width_;
-      for (Index i = 0; i < height_ * width_; ++i) channel[i] = keep[i] > S(0) ? channel[i] : S(0);
+      for (Index i = 0; i < pixels; ++i) channel[i] = keep[i] > S(0) ? channel[i] : S(0);
     }
 }
 
