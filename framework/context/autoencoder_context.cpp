@@ -87,8 +87,9 @@ void AutoencoderContext::fit(const std::vector<Demonstration>& demos, const Extr
   // A cached model that cannot be used (damaged, truncated, a directory in
   // its place) is reported once and trained again, never fatal.
   std::error_code error;
-  if (!path.empty() && std::filesystem::symlink_status(path, error).type() !=
-                           std::filesystem::file_type::not_found) {
+  if (!path.empty() && cache.reuse &&
+      std::filesystem::symlink_status(path, error).type() !=
+          std::filesystem::file_type::not_found) {
     try {
       model_ = std::make_unique<ConvAutoencoder<float>>(load_autoencoder(path));
       spdlog::info("reusing the trained autoencoder {}", path);

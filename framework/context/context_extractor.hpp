@@ -16,10 +16,13 @@
 namespace corrmp {
 
 // Where an extractor may cache what it learns: a directory and a key naming
-// the data it learns from (the demonstrations' cache key).
+// the data it learns from (the demonstrations' cache key). Without `reuse`
+// (run_experiment --no-cache) it learns afresh whatever the cache holds, and
+// what it learns replaces the cached entry.
 struct ExtractorCache {
   std::string directory;
   std::string data_key;
+  bool reuse = true;
 };
 
 class ContextExtractor {

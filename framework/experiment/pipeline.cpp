@@ -120,8 +120,8 @@ void run_stages(Experiment& experiment, const fs::path& dir, const RunOptions& o
     return;
   }
 
-  const ExtractorCache extractor_cache{!key.empty() && options.use_cache ? cache_dir.string() : "",
-                                       key};
+  const ExtractorCache extractor_cache{key.empty() ? "" : cache_dir.string(), key,
+                                       options.use_cache};
   if (experiment.context_extractor) {
     spdlog::info("fitting the context extractor ({})", experiment.config.context->type);
   }

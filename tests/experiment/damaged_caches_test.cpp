@@ -2,7 +2,8 @@
 // autoencoder model cache, truncated, with a flipped byte or replaced by a
 // directory, are reported once (a warning naming the file) and recomputed,
 // giving the same result as before; a cache that cannot be written is a
-// warning too.
+// warning too; a run told not to reuse the cache (--no-cache) trains again and
+// replaces the cached model.
 #include <gtest/gtest.h>
 
 #include <filesystem>
@@ -163,10 +164,11 @@ std::string cached_model(const std::string& folder) {
 }
 
 // Fits a fresh extractor (same seed, same random stream) and returns its metrics.
-std::vector<std::pair<std::string, double>> fit(const std::string& cache_folder) {
+std::vector<std::pair<std::string, double>> fit(const std::string& cache_folder,
+                                                bool reuse = true) {
   AutoencoderContext context(tiny_autoencoder(), 7);
   Rng rng(11);
-  context.fit(demonstrations_with_images(), {cache_folder, "key"}, rng);
+  context.fit(demonstrations_with_images(), {cache_folder, "key", reuse}, rng);
   return context.metrics();
 }
 
@@ -196,6 +198,27 @@ TEST(DamagedCaches, ADamagedAutoencoderCacheIsReportedOnceAndTrainedAgain) {
     EXPECT_EQ(fit(folder), first) << "an intact cache is reused";
     EXPECT_NE(log.text().find("reusing the trained autoencoder " + path), std::string::npos);
   }
+}
+
+// --no-cache: the cached model is not read (a damaged one draws no warning), the autoencoder
+// is trained again and replaces it, so the next run reuses the fresh model.
+TEST(DamagedCaches, WithoutReuseTheAutoencoderIsTrainedAgainAndReplacesTheCache) {
+  TempDir dir;
+  const std::string folder = dir.file("cache");
+  const auto first = fit(folder);
+  const std::string path = cached_model(folder);
+  damage(path, Damage::kFlipByte);
+  {
+    LogCapture log;
+    EXPECT_EQ(fit(folder, /*reuse=*/false), first);
+    EXPECT_EQ(log.warnings(), "");
+    EXPECT_EQ(log.text().find("reusing"), std::string::npos) << log.text();
+    EXPECT_NE(log.text().find("training the autoencoder"), std::string::npos) << log.text();
+  }
+  EXPECT_NO_THROW(nn::ModelFile::read(path)) << "the fresh model replaced the damaged one";
+  LogCapture log;
+  EXPECT_EQ(fit(folder), first);
+  EXPECT_NE(log.text().find("reusing the trained autoencoder " + path), std::string::npos);
 }
 
 TEST(DamagedCaches, ADirectoryInPlaceOfTheAutoencoderCacheIsNeverFatal) {
