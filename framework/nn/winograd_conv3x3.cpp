@@ -12,6 +12,7 @@
 #include "nn/winograd_conv3x3.hpp"
 
 #include <algorithm>
+#include <cstring>
 #include <limits>
 #include <stdexcept>
 
@@ -196,6 +197,12 @@ Index WinogradConv3x3<S>::term_stride(Index channels, Index columns) {
 
 template <class S>
 void WinogradConv3x3<S>::transform_weights(const S* weight) {
+  // Compared as bytes, so that a NaN or a zero's sign counts as a change.
+  const size_t values = static_cast<size_t>(9 * in_channels_ * out_channels_);
+  if (u_weights_.size() == values &&
+      std::memcmp(weight, u_weights_.data(), values * sizeof(S)) == 0)
+    return;
+  u_weights_.assign(weight, weight + values);
   // Row xi: U_xi as Cout x Cin, row-major (and a gap).
   // One output channel's pairs at a time, each step a loop over the input channels c.
   MatMap<S> u = u_.resize(kTerms, term_stride(out_channels_, in_channels_));

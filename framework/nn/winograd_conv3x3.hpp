@@ -27,6 +27,8 @@
 // the channel roles exchanged: g_{o,c}[i][j] = W[c][o][2 - i][2 - j].
 #pragma once
 
+#include <vector>
+
 #include "nn/buffer.hpp"
 #include "nn/tensor.hpp"
 
@@ -64,7 +66,8 @@ class WinogradConv3x3 {
 
   // Where g_{o,c}[i][j] is in the weight matrix.
   Index kernel_index(Index o, Index c, Index i, Index j) const;
-  // U_xi for every xi (kTerms matrices Cout x Cin).
+  // U_xi for every xi (kTerms matrices Cout x Cin), unless U already holds the transform of
+  // these very weights (bit for bit): backward follows forward with the same weights.
   void transform_weights(const S* weight);
   // Images of the batch per chunk.
   Index chunk_images(Index batch) const;
@@ -87,6 +90,7 @@ class WinogradConv3x3 {
   Index column_stride_;          // (tile_rows + 1) tile_cols: one patch column's run, see plane_
   Index block_;                  // 6 column_stride_: one row phase of plane_
   Buffer<S> u_;                  // U
+  std::vector<S> u_weights_;     // the weights U was computed from (empty: U not computed)
   Buffer<S> v_;                  // V, then dV, of one chunk (kTerms rows, term_stride apart)
   Buffer<S> m_;                  // M or dM of one chunk (likewise)
   Buffer<S> du_;                 // dU summed over the batch

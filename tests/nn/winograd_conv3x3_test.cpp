@@ -111,6 +111,31 @@ TEST(WinogradConv3x3, FusedReluOnOutputAndInputGradient) {
   EXPECT_EQ(dx_masked, (x.array() > 0.0).select(dx, 0.0));
 }
 
+// The layer keeps the transformed weights for the next call with the same weights; weights
+// changed in place (the same array, as after an optimiser step) must be transformed again.
+TEST(WinogradConv3x3, WeightsChangedInPlaceAreTransformedAgain) {
+  Rng rng(65);
+  const Shape s{3, 4, 5, 6, 2};
+  const Index in = s.cin * s.height * s.width, out = s.cout * s.height * s.width;
+  WinogradConv3x3<double> kept(s.cin, s.cout, s.height, s.width, KernelLayout::kConv);
+  MatD w = testing::random_matrix(s.cout, s.cin * 9, rng);
+  const Vec<double> b = testing::random_matrix(s.cout, 1, rng);
+  const MatD x = testing::random_matrix(s.batch, in, rng);
+  const MatD dy = testing::random_matrix(s.batch, out, rng);
+  MatD y(s.batch, out), dw = MatD::Zero(s.cout, s.cin * 9), dx(s.batch, in);
+  Vec<double> db = Vec<double>::Zero(s.cout);
+  kept.forward(w.data(), b.data(), x, y);
+  kept.backward(w.data(), x, dy, dw.data(), db.data(), dx.data(), dx.cols());
+  w(1, 4) += 0.25;  // one entry
+  kept.forward(w.data(), b.data(), x, y);
+  EXPECT_LE((y - testing::naive_conv2d(x, {s.cin, s.height, s.width}, w, b, 3, 1, 1)).norm(),
+            1e-12 * y.norm());
+  w(2, 0) -= 0.5;  // changed between a forward and the backward
+  kept.backward(w.data(), x, dy, dw.data(), db.data(), dx.data(), dx.cols());
+  EXPECT_LE((dx - direct_backward(x, dy, w, s.cin, s.cout, s.height, s.width).x).norm(),
+            1e-12 * dx.norm());
+}
+
 TEST(WinogradConv3x3, FloatAgreesWithDouble) {
   Rng rng(63);
   const Shape s{32, 32, 16, 16, 3};
