@@ -185,9 +185,8 @@ WinogradConv3x3<S>::WinogradConv3x3(Index in_channels, Index out_channels, Index
 }
 
 template <class S>
-Index WinogradConv3x3<S>::kernel_index(Index o, Index c, Index i, Index j) const {
-  if (layout_ == KernelLayout::kConv) return (o * in_channels_ + c) * 9 + i * 3 + j;
-  return (c * out_channels_ + o) * 9 + (2 - i) * 3 + (2 - j);
+Index WinogradConv3x3<S>::pair_offset(Index o, Index c) const {
+  return 9 * (layout_ == KernelLayout::kConv ? o * in_channels_ + c : c * out_channels_ + o);
 }
 
 template <class S>
@@ -210,9 +209,11 @@ void WinogradConv3x3<S>::transform_weights(const S* weight) {
   S* g = pair_scratch_.data();  // g_{o,c}[i][j] at g[(3 i + j) cin + c]
   S* t = g + 9 * cin;           // (G g_{o,c})[k][j] at t[(3 k + j) cin + c]
   for (Index o = 0; o < out_channels_; ++o) {
-    for (Index i = 0; i < 3; ++i)
-      for (Index j = 0; j < 3; ++j)
-        for (Index c = 0; c < cin; ++c) g[(3 * i + j) * cin + c] = weight[kernel_index(o, c, i, j)];
+    const bool flipped = layout_ == KernelLayout::kTransposed;
+    for (Index c = 0; c < cin; ++c) {  // the pair's 9 weights are contiguous
+      const S* pair = weight + pair_offset(o, c);
+      for (int e = 0; e < 9; ++e) g[e * cin + c] = pair[flipped ? 8 - e : e];
+    }
     for (int k = 0; k < kPatch; ++k)  // t = G g
       for (int j = 0; j < 3; ++j)
         for (Index c = 0; c < cin; ++c)
@@ -366,7 +367,7 @@ void WinogradConv3x3<S>::backward(const S* weight, ConstMatRef<S> x, ConstMatRef
   const Index batch = x.rows(), chunk = chunk_images(batch);
   const Index tiles = tile_rows_ * tile_cols_, cin = in_channels_, cout = out_channels_;
   MatMap<S> du = du_.resize(kTerms, term_stride(cout, cin));  // like U
-  du.setZero();
+  if (batch == 0) du.setZero();  // otherwise the first chunk's products write dU
   for (Index n = 0; n < batch; ++n)
     for (Index o = 0; o < cout; ++o)
       bias_grad[o] +=
@@ -381,7 +382,7 @@ void WinogradConv3x3<S>::backward(const S* weight, ConstMatRef<S> x, ConstMatRef
       MatMap<S> v(v_.view().data() + xi * v_terms, cin, columns);
       const ConstMatMap<S> dm(m_.view().data() + xi * m_terms, cout, columns);
       gemm<S>(dm, Op::kPlain, v, Op::kTransposed, MatMap<S>(du.data() + xi * du.cols(), cout, cin),
-              /*accumulate=*/true, transposed_);
+              /*accumulate=*/first > 0, transposed_);
       // V_xi is used up: it takes dV_xi.
       if (dx != nullptr)
         gemm<S>(u, Op::kTransposed, dm, Op::kPlain, v, /*accumulate=*/false, transposed_);
@@ -400,13 +401,19 @@ void WinogradConv3x3<S>::backward(const S* weight, ConstMatRef<S> x, ConstMatRef
           for (int k = 0; k < kPatch; ++k) sum += S(kG[k][i]) * du(kPatch * k + l, o * cin + c);
           s[(kPatch * i + l) * cin + c] = sum;
         }
+    S* dg = s + 18 * cin;        // dL/dg_{o,c}[i][j] at dg[(3 i + j) cin + c]
     for (int i = 0; i < 3; ++i)  // dg = s G
       for (int j = 0; j < 3; ++j)
         for (Index c = 0; c < cin; ++c) {
           S sum(0);
           for (int l = 0; l < kPatch; ++l) sum += s[(kPatch * i + l) * cin + c] * S(kG[l][j]);
-          weight_grad[kernel_index(o, c, i, j)] += sum;
+          dg[(3 * i + j) * cin + c] = sum;
         }
+    const bool flipped = layout_ == KernelLayout::kTransposed;
+    for (Index c = 0; c < cin; ++c) {  // added to the pair's 9 contiguous gradients
+      S* pair = weight_grad + pair_offset(o, c);
+      for (int e = 0; e < 9; ++e) pair[flipped ? 8 - e : e] += dg[e * cin + c];
+    }
   }
 }
 

@@ -64,8 +64,9 @@ class WinogradConv3x3 {
   // Distance between the term matrices of a chunk (channels x columns each).
   static Index term_stride(Index channels, Index columns);
 
-  // Where g_{o,c}[i][j] is in the weight matrix.
-  Index kernel_index(Index o, Index c, Index i, Index j) const;
+  // Where the 9 weights of g_{o,c} are in the weight matrix: g_{o,c}[i][j] at offset 3 i + j
+  // (KernelLayout::kConv) or 8 - (3 i + j) (kTransposed).
+  Index pair_offset(Index o, Index c) const;
   // U_xi for every xi (kTerms matrices Cout x Cin), unless U already holds the transform of
   // these very weights (bit for bit): backward follows forward with the same weights.
   void transform_weights(const S* weight);

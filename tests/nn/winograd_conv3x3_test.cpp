@@ -136,6 +136,21 @@ TEST(WinogradConv3x3, WeightsChangedInPlaceAreTransformedAgain) {
             1e-12 * dx.norm());
 }
 
+// The first chunk's products write dU in place of adding to it; an empty batch has no chunk.
+TEST(WinogradConv3x3, AnEmptyBatchAddsNoGradient) {
+  Rng rng(66);
+  WinogradConv3x3<double> conv(2, 3, 4, 4, KernelLayout::kConv);
+  const MatD w = testing::random_matrix(3, 2 * 9, rng);
+  const MatD x = testing::random_matrix(2, 2 * 16, rng),
+             dy = testing::random_matrix(2, 3 * 16, rng);
+  MatD dw = MatD::Zero(3, 2 * 9), dx(2, 2 * 16);
+  Vec<double> db = Vec<double>::Zero(3);
+  conv.backward(w.data(), x, dy, dw.data(), db.data(), dx.data(), dx.cols());  // dU not zero now
+  const MatD before = dw;
+  conv.backward(w.data(), x.topRows(0), dy.topRows(0), dw.data(), db.data(), nullptr, 0);
+  EXPECT_EQ(dw, before);
+}
+
 TEST(WinogradConv3x3, FloatAgreesWithDouble) {
   Rng rng(63);
   const Shape s{32, 32, 16, 16, 3};
