@@ -26,6 +26,9 @@ Conv2d<S>::Conv2d(const Conv2dOptions& options, Index input_height, Index input_
   if (options.kernel_size == 3 && options.stride == 1 && options.padding == 1)
     winograd_.emplace(options.in_channels, options.out_channels, input_height, input_width,
                       KernelLayout::kConv);
+  if (options.kernel_size == 3 && options.stride == 2 && options.padding == 1 &&
+      std::min(options.in_channels, options.out_channels) >= kMinStrideTwoWinogradChannels)
+    strided_winograd_.emplace(options.in_channels, options.out_channels, input_height, input_width);
 }
 
 template <class S>
@@ -34,6 +37,10 @@ void Conv2d<S>::forward(ConstMatRef<S> x, MatRef<S> y, bool relu) {
   check_shape("Conv2d::forward", "y", y, x.rows(), output_shape().size());
   if (winograd_) {
     winograd_->forward(weight_.data(), bias_.data(), x, y, relu);
+    return;
+  }
+  if (strided_winograd_) {
+    strided_winograd_->convolve(weight_.data(), bias_.data(), x, y, relu);
     return;
   }
   const Index cout = options_.out_channels, positions = geometry_.positions();
@@ -70,6 +77,11 @@ void Conv2d<S>::backward_chunks(ConstMatRef<S> x, ConstMatRef<S> dy, S* dx, Inde
   if (winograd_) {
     winograd_->backward(weight_.data(), x, dy, weight_grad_.data(), bias_grad_.data(), dx,
                         dx_stride, relu_input);
+    return;
+  }
+  if (strided_winograd_) {
+    strided_winograd_->convolve_backward(weight_.data(), x, dy, weight_grad_.data(),
+                                         bias_grad_.data(), dx, dx_stride, relu_input);
     return;
   }
   const Index cout = options_.out_channels, positions = geometry_.positions();

@@ -52,6 +52,11 @@ ConvTranspose2d<S>::ConvTranspose2d(const ConvTranspose2dOptions& options, Index
       options.output_padding == 0)
     winograd_.emplace(options.in_channels, options.out_channels, input_height, input_width,
                       KernelLayout::kTransposed);
+  // The adjoint of the stride-2 convolution of the output image (its geometry checked above).
+  if (options.kernel_size == 3 && options.stride == 2 && options.padding == 1 &&
+      std::min(options.in_channels, options.out_channels) >= kMinStrideTwoWinogradChannels)
+    strided_winograd_.emplace(options.out_channels, options.in_channels, geometry_.image.height,
+                              geometry_.image.width);
 }
 
 namespace {
@@ -82,6 +87,10 @@ void ConvTranspose2d<S>::forward(ConstMatRef<S> x, MatRef<S> y, bool relu) {
     winograd_->forward(weight_.data(), bias_.data(), x, y, relu);
     return;
   }
+  if (strided_winograd_) {
+    strided_winograd_->transpose(weight_.data(), bias_.data(), x, y, relu);
+    return;
+  }
   const Index cin = options_.in_channels;
   for_each_position_chunk(geometry_, x.rows(), [&](const PositionChunk& chunk) {
     const ConstStridedMap<S> x_chunk =
@@ -103,6 +112,12 @@ void ConvTranspose2d<S>::backward(ConstMatRef<S> x, ConstMatRef<S> dy, MatRef<S>
   if (winograd_) {
     winograd_->backward(weight_.data(), x, dy, weight_grad_.data(), bias_grad_.data(), dx.data(),
                         dx.outerStride(), relu_input);
+    return;
+  }
+  if (strided_winograd_) {
+    strided_winograd_->transpose_backward(weight_.data(), x, dy, weight_grad_.data(),
+                                          bias_grad_.data(), dx.data(), dx.outerStride(),
+                                          relu_input);
     return;
   }
   const Index cin = options_.in_channels, cout = options_.out_channels;

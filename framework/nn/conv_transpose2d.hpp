@@ -15,7 +15,9 @@
 // channel-major order (nn/channel_major.hpp); col2im starts Y at b 1^T.
 // With kernel 3, stride 1, padding 1 (and so no output padding) the layer is the convolution with
 // the kernel flipped and the channel roles exchanged, computed by Winograd's F(4x4, 3x3)
-// (nn/winograd_conv3x3.hpp).
+// (nn/winograd_conv3x3.hpp). With kernel 3, stride 2, padding 1 and at least
+// kMinStrideTwoWinogradChannels channels on both sides it is the adjoint of the stride-2
+// convolution with the same weights, computed by nn/winograd_stride2_conv3x3.hpp.
 // Initialisation follows torch.nn.ConvTranspose2d, whose fan_in is computed from weight
 // dimension 1, i.e. fan_in = Cout k k: W, b ~ U(-1/sqrt(Cout k k), 1/sqrt(Cout k k)), W first.
 #pragma once
@@ -30,6 +32,7 @@
 #include "nn/rng.hpp"
 #include "nn/tensor.hpp"
 #include "nn/winograd_conv3x3.hpp"
+#include "nn/winograd_stride2_conv3x3.hpp"
 
 namespace corrmp::nn {
 
@@ -82,6 +85,7 @@ class ConvTranspose2d {
   Buffer<S> channel_major_;  // X, then dL/dX, of one chunk in channel-major order
   Buffer<S> transposed_;     // im2col(dY)^T of one chunk (nn/gemm.hpp's scratch)
   std::optional<WinogradConv3x3<S>> winograd_;  // for kernel 3, stride 1, padding 1
+  std::optional<WinogradStrideTwoConv3x3<S>> strided_winograd_;  // kernel 3, stride 2, padding 1
 };
 
 extern template class ConvTranspose2d<float>;

@@ -6,6 +6,7 @@
 #include <type_traits>
 
 #include "nn/check.hpp"
+#include "nn/transpose.hpp"
 
 #if defined(__AVX512F__)
 #include <immintrin.h>
@@ -152,34 +153,9 @@ void product(Index m, Index n, Index k, const Lhs& a, const float* b, Index ldb,
     strip<1, kTransposedA>(m, k, a, b + j, ldb, c + j, ldc, accumulate, last);
 }
 
-// Transposes the 16 x 16 block r[0..15] (rows) in registers.
-void transpose16(__m512 r[16]) {
-  __m512 t[16];
-  for (int i = 0; i < 8; ++i) {
-    t[2 * i] = _mm512_unpacklo_ps(r[2 * i], r[2 * i + 1]);
-    t[2 * i + 1] = _mm512_unpackhi_ps(r[2 * i], r[2 * i + 1]);
-  }
-  for (int i = 0; i < 4; ++i) {
-    r[4 * i] = _mm512_shuffle_ps(t[4 * i], t[4 * i + 2], 0x44);
-    r[4 * i + 1] = _mm512_shuffle_ps(t[4 * i], t[4 * i + 2], 0xEE);
-    r[4 * i + 2] = _mm512_shuffle_ps(t[4 * i + 1], t[4 * i + 3], 0x44);
-    r[4 * i + 3] = _mm512_shuffle_ps(t[4 * i + 1], t[4 * i + 3], 0xEE);
-  }
-  for (int i = 0; i < 4; ++i) {
-    t[i] = _mm512_shuffle_f32x4(r[i], r[i + 4], 0x88);
-    t[i + 4] = _mm512_shuffle_f32x4(r[i], r[i + 4], 0xDD);
-    t[i + 8] = _mm512_shuffle_f32x4(r[i + 8], r[i + 12], 0x88);
-    t[i + 12] = _mm512_shuffle_f32x4(r[i + 8], r[i + 12], 0xDD);
-  }
-  for (int i = 0; i < 8; ++i) {
-    r[i] = _mm512_shuffle_f32x4(t[i], t[i + 8], 0x88);
-    r[i + 8] = _mm512_shuffle_f32x4(t[i], t[i + 8], 0xDD);
-  }
-}
-
 // dst (cols x ldd, ldd >= rows rounded up to 16) = src^T (src rows x cols, rows ld apart); the
 // columns of dst past `rows` are zero.
-void transpose(Index rows, Index cols, const float* src, Index ld, float* dst, Index ldd) {
+void transpose_padded(Index rows, Index cols, const float* src, Index ld, float* dst, Index ldd) {
   for (Index c0 = 0; c0 < cols; c0 += kLanes) {
     const Index width = std::min<Index>(kLanes, cols - c0);
     const __mmask16 mask = width == kLanes ? __mmask16(0xFFFF) : __mmask16((1u << width) - 1);
@@ -209,7 +185,7 @@ void avx512_gemm(ConstMatRef<float> a, Op op_a, ConstMatRef<float> b, Op op_b, M
   if (op_b == Op::kTransposed) {  // B is n x k: its transpose, k x n, into the scratch
     const Index padded = (n + kLanes - 1) / kLanes * kLanes;
     float* t = scratch.resize(k, padded).data();
-    transpose(n, k, b.data(), b.outerStride(), t, padded);
+    transpose_padded(n, k, b.data(), b.outerStride(), t, padded);
     rhs = t;
     ldb = padded;
   }

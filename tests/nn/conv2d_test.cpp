@@ -108,6 +108,34 @@ INSTANTIATE_TEST_SUITE_P(StridePadding, Conv2dForward, ::testing::ValuesIn(kCase
 INSTANTIATE_TEST_SUITE_P(StridePadding, Conv2dFusedRelu, ::testing::ValuesIn(kCases), case_name);
 INSTANTIATE_TEST_SUITE_P(StridePadding, Conv2dGrad, ::testing::ValuesIn(kCases), case_name);
 
+// Kernel 3, stride 2, padding 1 with 16 channels or more on both sides runs the stride-2
+// Winograd algorithm (nn/winograd_stride2_conv3x3.hpp): the layer's results and gradients must be
+// the same functions as on the im2col path.
+TEST(Conv2d, StrideTwoWinogradPathMatchesNaiveLoopAndFiniteDifferences) {
+  Rng rng(27);
+  for (const Index height : {7, 8}) {
+    Conv2d<double> conv({16, 16, 3, 2, 1}, height, 6, rng);
+    const Index n = 2;
+    MatD x = testing::random_matrix(n, conv.input_shape().size(), rng);
+    const MatD r = testing::random_matrix(n, conv.output_shape().size(), rng);
+    MatD y(n, conv.output_shape().size());
+    conv.forward(x, y);
+    const MatD expected =
+        testing::naive_conv2d(x, conv.input_shape(), conv.weight(), conv.bias(), 3, 2, 1);
+    EXPECT_LE((y - expected).norm(), 1e-12 * expected.norm()) << height;
+    auto params = conv.parameters();
+    zero_grad(params);
+    MatD dx(n, conv.input_shape().size());
+    conv.backward(x, r, dx);
+    auto loss = [&] {
+      MatD out(n, conv.output_shape().size());
+      conv.forward(x, out);
+      return testing::weighted_sum(out, r);
+    };
+    testing::expect_gradients_match(loss, testing::cases_for("x", x, dx, params));
+  }
+}
+
 TEST(Conv2dGrad, ParamOnlyBackwardMatchesFullBackward) {
   Rng rng(22);
   Conv2d<double> conv({2, 4, 3, 2, 1}, 8, 8, rng);

@@ -142,6 +142,33 @@ INSTANTIATE_TEST_SUITE_P(StridePadding, ConvTranspose2dGrad, ::testing::ValuesIn
 INSTANTIATE_TEST_SUITE_P(StridePadding, ConvTranspose2dAdjoint, ::testing::ValuesIn(kCases),
                          case_name);
 
+// Kernel 3, stride 2, padding 1 with 16 channels or more on both sides runs the adjoint of the
+// stride-2 Winograd convolution (nn/winograd_stride2_conv3x3.hpp), with either output padding.
+TEST(ConvTranspose2d, StrideTwoWinogradPathMatchesNaiveLoopAndFiniteDifferences) {
+  Rng rng(37);
+  for (const Index output_padding : {0, 1}) {
+    ConvTranspose2d<double> layer({16, 16, 3, 2, 1, output_padding}, 4, 3, rng);
+    const Index n = 2;
+    MatD x = testing::random_matrix(n, layer.input_shape().size(), rng);
+    const MatD r = testing::random_matrix(n, layer.output_shape().size(), rng);
+    MatD y(n, layer.output_shape().size());
+    layer.forward(x, y);
+    const MatD expected = testing::naive_conv_transpose2d(x, layer.input_shape(), layer.weight(),
+                                                          layer.bias(), 3, 2, 1, output_padding);
+    EXPECT_LE((y - expected).norm(), 1e-12 * expected.norm()) << output_padding;
+    auto params = layer.parameters();
+    zero_grad(params);
+    MatD dx(n, layer.input_shape().size());
+    layer.backward(x, r, dx);
+    auto loss = [&] {
+      MatD out(n, layer.output_shape().size());
+      layer.forward(x, out);
+      return testing::weighted_sum(out, r);
+    };
+    testing::expect_gradients_match(loss, testing::cases_for("x", x, dx, params));
+  }
+}
+
 TEST(ConvTranspose2d, AutoencoderDecoderShapesMirrorEncoder) {
   // The decoder undoes strides [2, 1, 2, 1, 2] back to 64x64 (output_padding 1 for stride 2).
   Rng rng(33);

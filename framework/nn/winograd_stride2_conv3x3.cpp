@@ -1,0 +1,495 @@
+// Winograd's algorithm for the stride-2, 3x3 layers (formulas in nn/winograd_stride2_conv3x3.hpp).
+//
+// Tile t of image n is (tile row ty, tile column tx), row n T + ty TW + tx of the chunk's term
+// matrices (T = TH TW tiles per image). Each 2-D transform is two passes of a 1-D transform, each
+// a loop over the channels of one tile's pixels or terms (contiguous in the pixel-major planes
+// and in the term matrices' rows), so that it vectorises.
+#include "nn/winograd_stride2_conv3x3.hpp"
+
+#include <algorithm>
+#include <cstring>
+#include <limits>
+#include <stdexcept>
+
+#include "nn/gemm.hpp"
+#include "nn/transpose.hpp"
+
+namespace corrmp::nn {
+namespace {
+
+// The chunk's term matrices hold at most about this many values each (1 MB of floats).
+constexpr Index kChunkValues = Index(1) << 14;
+constexpr Index kMinChunkTiles = 32;
+// Gap between the 81 term matrices of a chunk: the transforms write (or read) all 81 at the same
+// offset, and matrices a power of two apart would fall into the same cache sets.
+constexpr Index kTermGap = 16;
+
+// The arrays a transform reads and writes are distinct, which the compiler cannot prove.
+#if defined(__clang__)
+#define CORRMP_INDEPENDENT_LANES _Pragma("clang loop vectorize(assume_safety)")
+#elif defined(__GNUC__)
+#define CORRMP_INDEPENDENT_LANES _Pragma("GCC ivdep")
+#else
+#define CORRMP_INDEPENDENT_LANES
+#endif
+
+// The 1-D maps of the header, each on n lanes at once: input k of lane c at in[k in_step + c],
+// output k to out[k out_step + c].
+
+// B9^T s (9 -> 9): the even inputs s_1 s_3 s_5 s_7, then F(4, 2)'s B^T on e_k = s_2k.
+template <class S>
+void input_9(Index n, const S* __restrict in, Index in_step, S* __restrict out, Index out_step) {
+  CORRMP_INDEPENDENT_LANES
+  for (Index c = 0; c < n; ++c) {
+    const S e0 = in[c], e1 = in[2 * in_step + c], e2 = in[4 * in_step + c],
+            e3 = in[6 * in_step + c], e4 = in[8 * in_step + c];
+    out[c] = in[in_step + c];
+    out[out_step + c] = in[3 * in_step + c];
+    out[2 * out_step + c] = in[5 * in_step + c];
+    out[3 * out_step + c] = in[7 * in_step + c];
+    out[4 * out_step + c] = S(2) * (e0 - e2) + (e3 - e1);
+    out[5 * out_step + c] = S(2) * e1 + (e2 - e3);
+    out[6 * out_step + c] = S(3) * e2 - S(2) * e1 - e3;
+    out[7 * out_step + c] = e3 - e1;
+    out[8 * out_step + c] = S(2) * (e1 - e3) + (e4 - e2);
+  }
+}
+
+// B9 d, the adjoint of input_9 (9 -> 9): output 0 added to out with kAddFirst, outputs 1-8 with
+// kAddRest, the others written.
+template <bool kAddFirst, bool kAddRest, class S>
+void input_grad_9(Index n, const S* __restrict in, Index in_step, S* __restrict out,
+                  Index out_step) {
+  CORRMP_INDEPENDENT_LANES
+  for (Index c = 0; c < n; ++c) {
+    const S d4 = in[4 * in_step + c], d5 = in[5 * in_step + c], d6 = in[6 * in_step + c],
+            d7 = in[7 * in_step + c], d8 = in[8 * in_step + c];
+    const S r[9] = {S(2) * d4,
+                    in[c],
+                    S(2) * (d5 - d6 + d8) - (d4 + d7),
+                    in[in_step + c],
+                    (d5 - d8) + S(3) * d6 - S(2) * d4,
+                    in[2 * in_step + c],
+                    (d4 - d5) + (d7 - d6) - S(2) * d8,
+                    in[3 * in_step + c],
+                    d8};
+    out[c] = kAddFirst ? out[c] + r[0] : r[0];
+    for (int k = 1; k < 9; ++k)
+      out[k * out_step + c] = kAddRest ? out[k * out_step + c] + r[k] : r[k];
+  }
+}
+
+// A9^T m (9 -> 4).
+template <class S>
+void output_9(Index n, const S* __restrict in, Index in_step, S* __restrict out, Index out_step) {
+  CORRMP_INDEPENDENT_LANES
+  for (Index c = 0; c < n; ++c) {
+    const S m5 = in[5 * in_step + c], m6 = in[6 * in_step + c], m7 = in[7 * in_step + c];
+    const S sum = m5 + m6, diff = m5 - m6;
+    out[c] = in[c] + in[4 * in_step + c] + sum + m7;
+    out[out_step + c] = in[in_step + c] + diff + S(2) * m7;
+    out[2 * out_step + c] = in[2 * in_step + c] + sum + S(4) * m7;
+    out[3 * out_step + c] = in[3 * in_step + c] + diff + S(8) * m7 + in[8 * in_step + c];
+  }
+}
+
+// A9 g, the adjoint of output_9 (4 -> 9).
+template <class S>
+void output_grad_4(Index n, const S* __restrict in, Index in_step, S* __restrict out,
+                   Index out_step) {
+  CORRMP_INDEPENDENT_LANES
+  for (Index c = 0; c < n; ++c) {
+    const S g0 = in[c], g1 = in[in_step + c], g2 = in[2 * in_step + c], g3 = in[3 * in_step + c];
+    out[c] = g0;
+    out[out_step + c] = g1;
+    out[2 * out_step + c] = g2;
+    out[3 * out_step + c] = g3;
+    out[4 * out_step + c] = g0;
+    out[5 * out_step + c] = (g0 + g2) + (g1 + g3);
+    out[6 * out_step + c] = (g0 + g2) - (g1 + g3);
+    out[7 * out_step + c] = g0 + S(2) * g1 + S(4) * g2 + S(8) * g3;
+    out[8 * out_step + c] = g3;
+  }
+}
+
+// The distinct entries of G9 w (3 -> 6): the middle tap (G9's rows 0-3), then F(4, 2)'s G on the
+// outer taps (rows 4-8).
+template <class S>
+void weight_6(Index n, const S* __restrict in, Index in_step, S* __restrict out, Index out_step) {
+  const S half(0.5), sixth(1.0 / 6.0), third(1.0 / 3.0);
+  CORRMP_INDEPENDENT_LANES
+  for (Index c = 0; c < n; ++c) {
+    const S w0 = in[c], w2 = in[2 * in_step + c];
+    out[c] = in[in_step + c];
+    out[out_step + c] = half * w0;
+    out[2 * out_step + c] = half * (w0 + w2);
+    out[3 * out_step + c] = sixth * (w0 - w2);
+    out[4 * out_step + c] = sixth * w0 + third * w2;
+    out[5 * out_step + c] = w2;
+  }
+}
+
+// The adjoint of weight_6 (6 -> 3), entry 0 holding the sum over G9's rows 0-3.
+template <class S>
+void weight_grad_6(Index n, const S* __restrict in, Index in_step, S* __restrict out,
+                   Index out_step) {
+  const S half(0.5), sixth(1.0 / 6.0), third(1.0 / 3.0);
+  CORRMP_INDEPENDENT_LANES
+  for (Index c = 0; c < n; ++c) {
+    const S d2 = in[2 * in_step + c], d3 = in[3 * in_step + c], d4 = in[4 * in_step + c];
+    out[c] = half * (in[in_step + c] + d2) + sixth * (d3 + d4);
+    out[out_step + c] = in[c];
+    out[2 * out_step + c] = half * d2 - sixth * d3 + third * d4 + in[5 * in_step + c];
+  }
+}
+
+// Which of the 6 distinct entries of G9 w term xi of a dimension is.
+constexpr int weight_entry(int xi) { return xi < 4 ? 0 : xi - 3; }
+
+// Channel-major rows x cols pixels (channel c at image + c rows cols) into a pixel-major plane:
+// pixel (h, w) at plane + (h plane_cols + w) channels.
+template <class S>
+void to_pixel_major(const S* image, Index channels, Index rows, Index cols, S* plane,
+                    Index plane_cols) {
+  for (Index h = 0; h < rows; ++h)
+    transpose(channels, cols, image + h * cols, rows * cols, plane + h * plane_cols * channels,
+              channels);
+}
+
+// The inverse, plus bias[c] unless bias is null, through max(., floor).
+template <class S>
+void from_pixel_major(const S* plane, Index plane_cols, Index channels, Index rows, Index cols,
+                      const S* bias, S floor, S* image) {
+  const Index pixels = rows * cols;
+  for (Index h = 0; h < rows; ++h)
+    transpose(cols, channels, plane + h * plane_cols * channels, channels, image + h * cols,
+              pixels);
+  if (bias == nullptr && floor == -std::numeric_limits<S>::infinity()) return;
+  for (Index c = 0; c < channels; ++c) {
+    const S b = bias == nullptr ? S(0) : bias[c];
+    S* __restrict out = image + c * pixels;
+    for (Index i = 0; i < pixels; ++i) out[i] = std::max(out[i] + b, floor);
+  }
+}
+
+// image[i] = 0 where keep[i] <= 0 (the gradient through a ReLU whose output is keep).
+template <class S>
+void mask_by(const S* __restrict keep, Index size, S* __restrict image) {
+  for (Index i = 0; i < size; ++i) image[i] = keep[i] > S(0) ? image[i] : S(0);
+}
+
+}  // namespace
+
+template <class S>
+WinogradStrideTwoConv3x3<S>::WinogradStrideTwoConv3x3(Index full_channels, Index half_channels,
+                                                      Index height, Index width)
+    : full_channels_(full_channels),
+      half_channels_(half_channels),
+      height_(height),
+      width_(width),
+      half_height_((height + 1) / 2),
+      half_width_((width + 1) / 2),
+      tile_rows_((half_height_ + 3) / 4),
+      tile_cols_((half_width_ + 3) / 4),
+      padded_rows_(8 * tile_rows_ + 1),
+      padded_cols_(8 * tile_cols_ + 1) {
+  if (full_channels < 1 || half_channels < 1 || height < 1 || width < 1)
+    throw std::invalid_argument("WinogradStrideTwoConv3x3: empty shape");
+  full_plane_ = Vec<S>::Zero(padded_rows_ * padded_cols_ * full_channels);
+  full_sums_ = Vec<S>::Zero(padded_rows_ * padded_cols_ * full_channels);
+  half_plane_ = Vec<S>::Zero(16 * tile_rows_ * tile_cols_ * half_channels);
+  half_out_ = Vec<S>::Zero(16 * tile_rows_ * tile_cols_ * half_channels);
+  stage_ = Vec<S>::Zero(kTerms * std::max(full_channels, half_channels));
+}
+
+template <class S>
+Index WinogradStrideTwoConv3x3<S>::term_stride(Index rows, Index columns) {
+  return rows * columns + kTermGap;
+}
+
+template <class S>
+void WinogradStrideTwoConv3x3<S>::transform_weights(const S* weight) {
+  const Index cin = full_channels_, cout = half_channels_;
+  // Compared as bytes, so that a NaN or a zero's sign counts as a change.
+  const size_t values = static_cast<size_t>(9 * cin * cout);
+  if (u_weights_.size() == values &&
+      std::memcmp(weight, u_weights_.data(), values * sizeof(S)) == 0)
+    return;
+  u_weights_.assign(weight, weight + values);
+  const Index stride = term_stride(cout, cin);
+  S* u = u_.resize(kWeightTerms, stride).data();
+  S* g = stage_.data();   // g_{o,c}[a][b] at g[(3 a + b) cin + c]
+  S* rows = g + 9 * cin;  // (G6 g_{o,c})[p][b] at rows[(3 p + b) cin + c]
+  for (Index o = 0; o < cout; ++o) {
+    for (Index c = 0; c < cin; ++c) {  // the pair's 9 weights are contiguous
+      const S* pair = weight + 9 * (o * cin + c);
+      for (int e = 0; e < 9; ++e) g[e * cin + c] = pair[e];
+    }
+    for (int b = 0; b < 3; ++b) weight_6(cin, g + b * cin, 3 * cin, rows + b * cin, 3 * cin);
+    for (int p = 0; p < 6; ++p)  // weight term (p, q) row o at u + (6 p + q) stride + o cin
+      weight_6(cin, rows + 3 * p * cin, cin, u + 6 * p * stride + o * cin, stride);
+  }
+  S* ut = ut_.resize(kWeightTerms, stride).data();
+  for (int q = 0; q < kWeightTerms; ++q)
+    nn::transpose(cout, cin, u + q * stride, cin, ut + q * stride, cout);
+}
+
+template <class S>
+int WinogradStrideTwoConv3x3<S>::weight_term(int xi) {
+  return 6 * weight_entry(xi / kSide) + weight_entry(xi % kSide);
+}
+
+template <class S>
+Index WinogradStrideTwoConv3x3<S>::chunk_images(Index batch) const {
+  const Index per_image =
+      kTerms * std::max(full_channels_, half_channels_) * tile_rows_ * tile_cols_;
+  const Index tiles = tile_rows_ * tile_cols_;
+  const Index images = std::max(kChunkValues / per_image, (kMinChunkTiles + tiles - 1) / tiles);
+  return std::max<Index>(1, std::min(batch, images));
+}
+
+template <class S>
+void WinogradStrideTwoConv3x3<S>::full_to_terms(const S* images, Index stride, Index count) {
+  const Index C = full_channels_, TW = tile_cols_, T = tile_rows_ * TW, columns = count * T;
+  const Index terms = term_stride(C, columns);
+  S* v = v_.resize(kTerms, terms).data();
+  S* rows = stage_.data();  // the patch's rows transformed: term eta of row u at (9 u + eta) C
+  for (Index n = 0; n < count; ++n) {
+    // Pixel (h, w) at padded (h + 1, w + 1); the border and the pixels past the image stay zero.
+    to_pixel_major(images + n * stride, C, height_, width_,
+                   full_plane_.data() + (padded_cols_ + 1) * C, padded_cols_);
+    for (Index ty = 0; ty < tile_rows_; ++ty)
+      for (Index tx = 0; tx < TW; ++tx) {
+        const Index t = n * T + ty * TW + tx;
+        for (int u = 0; u < kSide; ++u)  // patch row u is padded row 8 ty + u
+          input_9(C, full_plane_.data() + ((8 * ty + u) * padded_cols_ + 8 * tx) * C, C,
+                  rows + kSide * u * C, C);
+        for (int eta = 0; eta < kSide; ++eta)  // term (xi, eta) at v + (9 xi + eta) terms + t C
+          input_9(C, rows + eta * C, kSide * C, v + eta * terms + t * C, kSide * terms);
+      }
+  }
+}
+
+template <class S>
+void WinogradStrideTwoConv3x3<S>::half_to_terms(const S* images, Index stride, Index count) {
+  const Index O = half_channels_, TW = tile_cols_, T = tile_rows_ * TW, columns = count * T;
+  const Index terms = term_stride(O, columns), plane_cols = 4 * TW;
+  S* m = m_.resize(kTerms, terms).data();
+  S* rows = stage_.data();  // the tile's rows expanded: term eta of row i at (9 i + eta) O
+  for (Index n = 0; n < count; ++n) {
+    to_pixel_major(images + n * stride, O, half_height_, half_width_, half_plane_.data(),
+                   plane_cols);
+    for (Index ty = 0; ty < tile_rows_; ++ty)
+      for (Index tx = 0; tx < TW; ++tx) {
+        const Index t = n * T + ty * TW + tx;
+        for (int i = 0; i < 4; ++i)
+          output_grad_4(O, half_plane_.data() + ((4 * ty + i) * plane_cols + 4 * tx) * O, O,
+                        rows + kSide * i * O, O);
+        for (int eta = 0; eta < kSide; ++eta)
+          output_grad_4(O, rows + eta * O, kSide * O, m + eta * terms + t * O, kSide * terms);
+      }
+  }
+}
+
+template <class S>
+void WinogradStrideTwoConv3x3<S>::terms_to_half(Index count, S* images, Index stride, const S* bias,
+                                                bool relu, const S* keep, Index keep_stride) {
+  const Index O = half_channels_, TW = tile_cols_, T = tile_rows_ * TW, columns = count * T;
+  const Index terms = term_stride(O, columns), plane_cols = 4 * TW;
+  const S* m = m_.view().data();
+  S* rows = stage_.data();  // A9^T along eta: value j of term row xi at (4 xi + j) O
+  const S floor = relu ? S(0) : -std::numeric_limits<S>::infinity();
+  for (Index n = 0; n < count; ++n) {
+    for (Index ty = 0; ty < tile_rows_; ++ty)
+      for (Index tx = 0; tx < TW; ++tx) {
+        const Index t = n * T + ty * TW + tx;
+        for (int xi = 0; xi < kSide; ++xi)
+          output_9(O, m + kSide * xi * terms + t * O, terms, rows + 4 * xi * O, O);
+        for (int j = 0; j < 4; ++j)  // pixel (4 ty + i, 4 tx + j)
+          output_9(O, rows + j * O, 4 * O,
+                   half_out_.data() + ((4 * ty) * plane_cols + 4 * tx + j) * O, plane_cols * O);
+      }
+    S* image = images + n * stride;
+    from_pixel_major(half_out_.data(), plane_cols, O, half_height_, half_width_, bias, floor,
+                     image);
+    if (keep != nullptr) mask_by(keep + n * keep_stride, half_size(), image);
+  }
+}
+
+template <class S>
+void WinogradStrideTwoConv3x3<S>::terms_to_full(Index count, S* images, Index stride, const S* bias,
+                                                bool relu, const S* keep, Index keep_stride) {
+  const Index C = full_channels_, TW = tile_cols_, T = tile_rows_ * TW, columns = count * T;
+  const Index terms = term_stride(C, columns);
+  const S* v = v_.view().data();
+  S* rows = stage_.data();  // B9 along eta: patch column v of term row xi at (9 xi + v) C
+  const S floor = relu ? S(0) : -std::numeric_limits<S>::infinity();
+  for (Index n = 0; n < count; ++n) {
+    // Patches overlap by one pixel: tiles in order, each adds its first patch row to what the
+    // tile above wrote and its first patch column to what the tile on the left wrote, and writes
+    // the rest (the padded border row and column 0 are never read back).
+    for (Index ty = 0; ty < tile_rows_; ++ty)
+      for (Index tx = 0; tx < TW; ++tx) {
+        const Index t = n * T + ty * TW + tx;
+        for (int xi = 0; xi < kSide; ++xi)
+          input_grad_9<false, false>(C, v + kSide * xi * terms + t * C, terms,
+                                     rows + kSide * xi * C, C);
+        S* patch = full_sums_.data() + ((8 * ty) * padded_cols_ + 8 * tx) * C;
+        const Index step = padded_cols_ * C;
+        for (int col = 0; col < kSide; ++col) {
+          const S* in = rows + col * C;
+          if (col == 0 && tx > 0)
+            input_grad_9<true, true>(C, in, kSide * C, patch, step);
+          else if (ty > 0)
+            input_grad_9<true, false>(C, in, kSide * C, patch + col * C, step);
+          else
+            input_grad_9<false, false>(C, in, kSide * C, patch + col * C, step);
+        }
+      }
+    S* image = images + n * stride;
+    from_pixel_major(full_sums_.data() + (padded_cols_ + 1) * C, padded_cols_, C, height_, width_,
+                     bias, floor, image);
+    if (keep != nullptr) mask_by(keep + n * keep_stride, full_size(), image);
+  }
+}
+
+template <class S>
+void WinogradStrideTwoConv3x3<S>::multiply_forward(Index columns) {
+  const Index C = full_channels_, O = half_channels_;
+  const Index v_terms = term_stride(C, columns), m_terms = term_stride(O, columns);
+  const Index u_terms = term_stride(O, C);
+  m_.resize(kTerms, m_terms);
+  for (int xi = 0; xi < kTerms; ++xi)
+    gemm<S>(ConstMatMap<S>(v_.view().data() + xi * v_terms, columns, C), Op::kPlain,
+            ConstMatMap<S>(ut_.view().data() + weight_term(xi) * u_terms, C, O), Op::kPlain,
+            MatMap<S>(m_.view().data() + xi * m_terms, columns, O), /*accumulate=*/false, scratch_);
+}
+
+template <class S>
+void WinogradStrideTwoConv3x3<S>::multiply_adjoint(Index columns) {
+  const Index C = full_channels_, O = half_channels_;
+  const Index v_terms = term_stride(C, columns), m_terms = term_stride(O, columns);
+  const Index u_terms = term_stride(O, C);
+  v_.resize(kTerms, v_terms);
+  for (int xi = 0; xi < kTerms; ++xi)
+    gemm<S>(ConstMatMap<S>(m_.view().data() + xi * m_terms, columns, O), Op::kPlain,
+            ConstMatMap<S>(u_.view().data() + weight_term(xi) * u_terms, O, C), Op::kPlain,
+            MatMap<S>(v_.view().data() + xi * v_terms, columns, C), /*accumulate=*/false, scratch_);
+}
+
+template <class S>
+void WinogradStrideTwoConv3x3<S>::accumulate_weight_terms(Index columns, bool first_chunk) {
+  const Index C = full_channels_, O = half_channels_;
+  const Index v_terms = term_stride(C, columns), m_terms = term_stride(O, columns);
+  const Index u_terms = term_stride(O, C);
+  if (first_chunk) dut_.resize(kWeightTerms, u_terms);
+  bool written[kWeightTerms] = {};  // in this chunk
+  for (int xi = 0; xi < kTerms; ++xi) {
+    const int q = weight_term(xi);  // the terms of one weight term add up
+    gemm<S>(ConstMatMap<S>(v_.view().data() + xi * v_terms, columns, C), Op::kTransposed,
+            ConstMatMap<S>(m_.view().data() + xi * m_terms, columns, O), Op::kPlain,
+            MatMap<S>(dut_.view().data() + q * u_terms, C, O),
+            /*accumulate=*/!first_chunk || written[q], scratch_);
+    written[q] = true;
+  }
+}
+
+template <class S>
+void WinogradStrideTwoConv3x3<S>::add_weight_grad(S* weight_grad) {
+  const Index cin = full_channels_, cout = half_channels_, stride = term_stride(cout, cin);
+  const S* dut = dut_.view().data();
+  S* rows = stage_.data();      // G6^T along q: (p, b) of channel c at (3 p + b) cout + o
+  S* pairs = rows + 18 * cout;  // dL/dg_{o,c}[a][b] at (3 a + b) cout + o
+  for (Index c = 0; c < cin; ++c) {
+    for (int p = 0; p < 6; ++p)  // dU_{p,q}^T row c at dut + (6 p + q) stride + c cout
+      weight_grad_6(cout, dut + 6 * p * stride + c * cout, stride, rows + 3 * p * cout, cout);
+    for (int b = 0; b < 3; ++b)
+      weight_grad_6(cout, rows + b * cout, 3 * cout, pairs + b * cout, 3 * cout);
+    for (Index o = 0; o < cout; ++o) {  // added to the pair's 9 contiguous gradients
+      S* pair = weight_grad + 9 * (o * cin + c);
+      for (int e = 0; e < 9; ++e) pair[e] += pairs[e * cout + o];
+    }
+  }
+}
+
+template <class S>
+void WinogradStrideTwoConv3x3<S>::convolve(const S* weight, const S* bias, ConstMatRef<S> full,
+                                           MatRef<S> half, bool relu) {
+  transform_weights(weight);
+  const Index batch = full.rows(), chunk = chunk_images(batch), tiles = tile_rows_ * tile_cols_;
+  for (Index first = 0; first < batch; first += chunk) {
+    const Index count = std::min(chunk, batch - first);
+    full_to_terms(full.row(first).data(), full.outerStride(), count);
+    multiply_forward(count * tiles);
+    terms_to_half(count, half.row(first).data(), half.outerStride(), bias, relu, nullptr, 0);
+  }
+}
+
+template <class S>
+void WinogradStrideTwoConv3x3<S>::convolve_backward(const S* weight, ConstMatRef<S> full,
+                                                    ConstMatRef<S> half_grad, S* weight_grad,
+                                                    S* bias_grad, S* full_grad,
+                                                    Index full_grad_stride, bool relu_input) {
+  const Index batch = full.rows(), chunk = chunk_images(batch), tiles = tile_rows_ * tile_cols_;
+  const Index half_pixels = half_height_ * half_width_;
+  for (Index n = 0; n < batch; ++n)
+    for (Index o = 0; o < half_channels_; ++o)
+      bias_grad[o] +=
+          ConstMatMap<S>(half_grad.row(n).data() + o * half_pixels, 1, half_pixels).sum();
+  if (batch == 0) return;
+  transform_weights(weight);
+  for (Index first = 0; first < batch; first += chunk) {
+    const Index count = std::min(chunk, batch - first);
+    full_to_terms(full.row(first).data(), full.outerStride(), count);
+    half_to_terms(half_grad.row(first).data(), half_grad.outerStride(), count);
+    accumulate_weight_terms(count * tiles, first == 0);
+    if (full_grad == nullptr) continue;
+    multiply_adjoint(count * tiles);  // V is used up: it takes dV
+    terms_to_full(count, full_grad + first * full_grad_stride, full_grad_stride, nullptr, false,
+                  relu_input ? full.row(first).data() : nullptr, full.outerStride());
+  }
+  add_weight_grad(weight_grad);
+}
+
+template <class S>
+void WinogradStrideTwoConv3x3<S>::transpose(const S* weight, const S* bias, ConstMatRef<S> half,
+                                            MatRef<S> full, bool relu) {
+  transform_weights(weight);
+  const Index batch = half.rows(), chunk = chunk_images(batch), tiles = tile_rows_ * tile_cols_;
+  for (Index first = 0; first < batch; first += chunk) {
+    const Index count = std::min(chunk, batch - first);
+    half_to_terms(half.row(first).data(), half.outerStride(), count);
+    multiply_adjoint(count * tiles);
+    terms_to_full(count, full.row(first).data(), full.outerStride(), bias, relu, nullptr, 0);
+  }
+}
+
+template <class S>
+void WinogradStrideTwoConv3x3<S>::transpose_backward(const S* weight, ConstMatRef<S> half,
+                                                     ConstMatRef<S> full_grad, S* weight_grad,
+                                                     S* bias_grad, S* half_grad,
+                                                     Index half_grad_stride, bool relu_input) {
+  const Index batch = half.rows(), chunk = chunk_images(batch), tiles = tile_rows_ * tile_cols_;
+  const Index full_pixels = height_ * width_;
+  for (Index n = 0; n < batch; ++n)
+    for (Index c = 0; c < full_channels_; ++c)
+      bias_grad[c] +=
+          ConstMatMap<S>(full_grad.row(n).data() + c * full_pixels, 1, full_pixels).sum();
+  if (batch == 0) return;
+  transform_weights(weight);
+  for (Index first = 0; first < batch; first += chunk) {
+    const Index count = std::min(chunk, batch - first);
+    full_to_terms(full_grad.row(first).data(), full_grad.outerStride(), count);
+    half_to_terms(half.row(first).data(), half.outerStride(), count);
+    accumulate_weight_terms(count * tiles, first == 0);
+    multiply_forward(count * tiles);  // dM is used up: it takes the product
+    terms_to_half(count, half_grad + first * half_grad_stride, half_grad_stride, nullptr, false,
+                  relu_input ? half.row(first).data() : nullptr, half.outerStride());
+  }
+  add_weight_grad(weight_grad);
+}
+
+template class WinogradStrideTwoConv3x3<float>;
+template class WinogradStrideTwoConv3x3<double>;
+
+}  // namespace corrmp::nn
