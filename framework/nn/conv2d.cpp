@@ -27,7 +27,7 @@ Conv2d<S>::Conv2d(const Conv2dOptions& options, Index input_height, Index input_
     winograd_.emplace(options.in_channels, options.out_channels, input_height, input_width,
                       KernelLayout::kConv);
   if (options.kernel_size == 3 && options.stride == 2 && options.padding == 1 &&
-      std::min(options.in_channels, options.out_channels) >= kMinStrideTwoWinogradChannels)
+      std::min(options.in_channels, options.out_channels) >= kMinStride2WinogradChannels)
     strided_winograd_.emplace(options.in_channels, options.out_channels, input_height, input_width);
 }
 
@@ -124,6 +124,19 @@ void Conv2d<S>::backward(ConstMatRef<S> x, ConstMatRef<S> dy, MatRef<S> dx, bool
   check_batch("Conv2d::backward", x, dy);
   check_shape("Conv2d::backward", "dx", dx, x.rows(), input_shape().size());
   backward_chunks(x, dy, dx.data(), dx.outerStride(), relu_input);
+}
+
+template <class S>
+void Conv2d<S>::transform_weights() {
+  if (winograd_) winograd_->transform_weights(weight_.data());
+  if (strided_winograd_) strided_winograd_->transform_weights(weight_.data());
+}
+
+template <class S>
+void Conv2d<S>::share_weight_transforms(const Conv2d& source) {
+  if (winograd_ && source.winograd_) winograd_->share_weight_transforms(&*source.winograd_);
+  if (strided_winograd_ && source.strided_winograd_)
+    strided_winograd_->share_weight_transforms(&*source.strided_winograd_);
 }
 
 template <class S>

@@ -15,7 +15,7 @@
 // at once. Y starts as b 1^T and the product is added to it.
 // Layers with kernel 3, stride 1 and padding 1 compute the same formulas by Winograd's F(4x4, 3x3)
 // (nn/winograd_conv3x3.hpp), with 4 times fewer multiply-adds; those with kernel 3, stride 2,
-// padding 1 and at least kMinStrideTwoWinogradChannels channels on both sides by its stride-2
+// padding 1 and at least kMinStride2WinogradChannels channels on both sides by its stride-2
 // form (nn/winograd_stride2_conv3x3.hpp), with 1.8 times fewer.
 // Initialisation follows torch.nn.Conv2d: W, b ~ U(-1/sqrt(Cin k k), 1/sqrt(Cin k k)), W first.
 // The layer owns only scratch buffers, sized on first use; backward takes the forward input
@@ -63,6 +63,14 @@ class Conv2d {
   /// Accumulates dL/dW and dL/db only (for a first layer whose input needs no gradient).
   void accumulate_param_grad(ConstMatRef<S> x, ConstMatRef<S> dy);
 
+  /// Transforms the weights for the layer's fast algorithm (nn/winograd_conv3x3.hpp,
+  /// nn/winograd_stride2_conv3x3.hpp) now, if it has one; forward and backward do it when needed.
+  void transform_weights();
+  /// For a data-parallel replica: use `source`'s transformed weights whenever they are of the
+  /// same weights. `source` has this layer's options and sizes, outlives it, and does not
+  /// transform other weights while this layer runs.
+  void share_weight_transforms(const Conv2d& source);
+
   /// {prefix + "weight" [Cout, Cin, k, k], prefix + "bias" [Cout]}.
   std::vector<Parameter<S>> parameters(const std::string& prefix = "");
 
@@ -72,6 +80,11 @@ class Conv2d {
     return {options_.out_channels, geometry_.out_height, geometry_.out_width};
   }
   Index num_parameters() const { return weight_.size() + bias_.size(); }
+  ConvAlgorithm algorithm() const {
+    return winograd_           ? ConvAlgorithm::kWinograd
+           : strided_winograd_ ? ConvAlgorithm::kWinogradStride2
+                               : ConvAlgorithm::kIm2col;
+  }
 
   Mat<S>& weight() { return weight_; }  ///< Cout x (Cin k k)
   Vec<S>& bias() { return bias_; }      ///< Cout
@@ -95,7 +108,7 @@ class Conv2d {
   Buffer<S> outputs_;                           // Y or dY of one chunk, channel-major
   Buffer<S> transposed_;                        // U^T of one chunk (nn/gemm.hpp's scratch)
   std::optional<WinogradConv3x3<S>> winograd_;  // for kernel 3, stride 1, padding 1
-  std::optional<WinogradStrideTwoConv3x3<S>> strided_winograd_;  // kernel 3, stride 2, padding 1
+  std::optional<WinogradStride2Conv3x3<S>> strided_winograd_;  // kernel 3, stride 2, padding 1
 };
 
 extern template class Conv2d<float>;

@@ -53,4 +53,9 @@ Index conv_transpose_output_size(Index in, Index kernel, Index stride, Index pad
 PatchGeometry conv_patch_geometry(const ImageShape& image, Index kernel, Index stride,
                                   Index padding);
 
+/// How a convolution layer computes (nn/conv2d.hpp, nn/conv_transpose2d.hpp): im2col and matrix
+/// products, Winograd's F(4x4, 3x3) (nn/winograd_conv3x3.hpp) or its stride-2 form
+/// (nn/winograd_stride2_conv3x3.hpp).
+enum class ConvAlgorithm { kIm2col, kWinograd, kWinogradStride2 };
+
 }  // namespace corrmp::nn

@@ -54,7 +54,7 @@ ConvTranspose2d<S>::ConvTranspose2d(const ConvTranspose2dOptions& options, Index
                       KernelLayout::kTransposed);
   // The adjoint of the stride-2 convolution of the output image (its geometry checked above).
   if (options.kernel_size == 3 && options.stride == 2 && options.padding == 1 &&
-      std::min(options.in_channels, options.out_channels) >= kMinStrideTwoWinogradChannels)
+      std::min(options.in_channels, options.out_channels) >= kMinStride2WinogradChannels)
     strided_winograd_.emplace(options.out_channels, options.in_channels, geometry_.image.height,
                               geometry_.image.width);
 }
@@ -88,7 +88,7 @@ void ConvTranspose2d<S>::forward(ConstMatRef<S> x, MatRef<S> y, bool relu) {
     return;
   }
   if (strided_winograd_) {
-    strided_winograd_->transpose(weight_.data(), bias_.data(), x, y, relu);
+    strided_winograd_->convolve_transposed(weight_.data(), bias_.data(), x, y, relu);
     return;
   }
   const Index cin = options_.in_channels;
@@ -115,9 +115,9 @@ void ConvTranspose2d<S>::backward(ConstMatRef<S> x, ConstMatRef<S> dy, MatRef<S>
     return;
   }
   if (strided_winograd_) {
-    strided_winograd_->transpose_backward(weight_.data(), x, dy, weight_grad_.data(),
-                                          bias_grad_.data(), dx.data(), dx.outerStride(),
-                                          relu_input);
+    strided_winograd_->convolve_transposed_backward(weight_.data(), x, dy, weight_grad_.data(),
+                                                    bias_grad_.data(), dx.data(), dx.outerStride(),
+                                                    relu_input);
     return;
   }
   const Index cin = options_.in_channels, cout = options_.out_channels;
@@ -152,6 +152,19 @@ void ConvTranspose2d<S>::backward(ConstMatRef<S> x, ConstMatRef<S> dy, MatRef<S>
       mask_by_relu_output(x.row(chunk.image_begin).data(), x.outerStride(), chunk.images,
                           input_shape().size(), dx_first, dx.outerStride());
   });
+}
+
+template <class S>
+void ConvTranspose2d<S>::transform_weights() {
+  if (winograd_) winograd_->transform_weights(weight_.data());
+  if (strided_winograd_) strided_winograd_->transform_weights(weight_.data());
+}
+
+template <class S>
+void ConvTranspose2d<S>::share_weight_transforms(const ConvTranspose2d& source) {
+  if (winograd_ && source.winograd_) winograd_->share_weight_transforms(&*source.winograd_);
+  if (strided_winograd_ && source.strided_winograd_)
+    strided_winograd_->share_weight_transforms(&*source.strided_winograd_);
 }
 
 template <class S>

@@ -16,7 +16,7 @@
 // With kernel 3, stride 1, padding 1 (and so no output padding) the layer is the convolution with
 // the kernel flipped and the channel roles exchanged, computed by Winograd's F(4x4, 3x3)
 // (nn/winograd_conv3x3.hpp). With kernel 3, stride 2, padding 1 and at least
-// kMinStrideTwoWinogradChannels channels on both sides it is the adjoint of the stride-2
+// kMinStride2WinogradChannels channels on both sides it is the adjoint of the stride-2
 // convolution with the same weights, computed by nn/winograd_stride2_conv3x3.hpp.
 // Initialisation follows torch.nn.ConvTranspose2d, whose fan_in is computed from weight
 // dimension 1, i.e. fan_in = Cout k k: W, b ~ U(-1/sqrt(Cout k k), 1/sqrt(Cout k k)), W first.
@@ -59,6 +59,14 @@ class ConvTranspose2d {
   /// relu_input, x is the output of a ReLU and dx the gradient before it, dL/dx [x > 0].
   void backward(ConstMatRef<S> x, ConstMatRef<S> dy, MatRef<S> dx, bool relu_input = false);
 
+  /// Transforms the weights for the layer's fast algorithm (nn/winograd_conv3x3.hpp,
+  /// nn/winograd_stride2_conv3x3.hpp) now, if it has one; forward and backward do it when needed.
+  void transform_weights();
+  /// For a data-parallel replica: use `source`'s transformed weights whenever they are of the
+  /// same weights. `source` has this layer's options and sizes, outlives it, and does not
+  /// transform other weights while this layer runs.
+  void share_weight_transforms(const ConvTranspose2d& source);
+
   /// {prefix + "weight" [Cin, Cout, k, k], prefix + "bias" [Cout]}.
   std::vector<Parameter<S>> parameters(const std::string& prefix = "");
 
@@ -68,6 +76,11 @@ class ConvTranspose2d {
   }
   const ImageShape& output_shape() const { return geometry_.image; }
   Index num_parameters() const { return weight_.size() + bias_.size(); }
+  ConvAlgorithm algorithm() const {
+    return winograd_           ? ConvAlgorithm::kWinograd
+           : strided_winograd_ ? ConvAlgorithm::kWinogradStride2
+                               : ConvAlgorithm::kIm2col;
+  }
 
   Mat<S>& weight() { return weight_; }  ///< Cin x (Cout k k)
   Vec<S>& bias() { return bias_; }      ///< Cout
@@ -84,8 +97,8 @@ class ConvTranspose2d {
   Buffer<S> columns_;        // W^T X or im2col(dY) of one chunk
   Buffer<S> channel_major_;  // X, then dL/dX, of one chunk in channel-major order
   Buffer<S> transposed_;     // im2col(dY)^T of one chunk (nn/gemm.hpp's scratch)
-  std::optional<WinogradConv3x3<S>> winograd_;  // for kernel 3, stride 1, padding 1
-  std::optional<WinogradStrideTwoConv3x3<S>> strided_winograd_;  // kernel 3, stride 2, padding 1
+  std::optional<WinogradConv3x3<S>> winograd_;                 // for kernel 3, stride 1, padding 1
+  std::optional<WinogradStride2Conv3x3<S>> strided_winograd_;  // kernel 3, stride 2, padding 1
 };
 
 extern template class ConvTranspose2d<float>;

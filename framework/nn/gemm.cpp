@@ -156,19 +156,10 @@ void product(Index m, Index n, Index k, const Lhs& a, const float* b, Index ldb,
 // dst (cols x ldd, ldd >= rows rounded up to 16) = src^T (src rows x cols, rows ld apart); the
 // columns of dst past `rows` are zero.
 void transpose_padded(Index rows, Index cols, const float* src, Index ld, float* dst, Index ldd) {
-  for (Index c0 = 0; c0 < cols; c0 += kLanes) {
-    const Index width = std::min<Index>(kLanes, cols - c0);
-    const __mmask16 mask = width == kLanes ? __mmask16(0xFFFF) : __mmask16((1u << width) - 1);
-    for (Index r0 = 0; r0 < rows; r0 += kLanes) {
-      const Index height = std::min<Index>(kLanes, rows - r0);
-      __m512 block[kLanes];
-      for (Index i = 0; i < kLanes; ++i)
-        block[i] = i < height ? _mm512_maskz_loadu_ps(mask, src + (r0 + i) * ld + c0)
-                              : _mm512_setzero_ps();
-      transpose16(block);
-      for (Index i = 0; i < width; ++i) _mm512_storeu_ps(dst + (c0 + i) * ldd + r0, block[i]);
-    }
-  }
+  transpose(rows, cols, src, ld, dst, ldd);
+  const Index padded = (rows + kLanes - 1) / kLanes * kLanes;
+  if (padded > rows)
+    for (Index j = 0; j < cols; ++j) std::fill(dst + j * ldd + rows, dst + j * ldd + padded, 0.0f);
 }
 
 void avx512_gemm(ConstMatRef<float> a, Op op_a, ConstMatRef<float> b, Op op_b, MatRef<float> c,

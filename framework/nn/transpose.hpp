@@ -16,6 +16,10 @@ namespace corrmp::nn {
 /// Float runs on 16 x 16 blocks in AVX-512 registers when the build targets AVX-512.
 template <class S>
 void transpose(Index rows, Index cols, const S* src, Index ld, S* dst, Index ldd);
+#if defined(__AVX512F__)
+template <>
+void transpose<float>(Index rows, Index cols, const float* src, Index ld, float* dst, Index ldd);
+#endif
 
 #if defined(__AVX512F__)
 /// Transposes the 16 x 16 block r[0..15] (rows) in registers.

@@ -12,7 +12,6 @@
 #include "nn/winograd_conv3x3.hpp"
 
 #include <algorithm>
-#include <cstring>
 #include <limits>
 #include <stdexcept>
 
@@ -196,12 +195,15 @@ Index WinogradConv3x3<S>::term_stride(Index channels, Index columns) {
 
 template <class S>
 void WinogradConv3x3<S>::transform_weights(const S* weight) {
-  // Compared as bytes, so that a NaN or a zero's sign counts as a change.
   const size_t values = static_cast<size_t>(9 * in_channels_ * out_channels_);
-  if (u_weights_.size() == values &&
-      std::memcmp(weight, u_weights_.data(), values * sizeof(S)) == 0)
+  if (u_stamp_.matches(weight, values)) {
+    u_data_ = u_.view().data();
     return;
-  u_weights_.assign(weight, weight + values);
+  }
+  if (weight_source_ != nullptr && weight_source_->u_stamp_.matches(weight, values)) {
+    u_data_ = weight_source_->u_data_;
+    return;
+  }
   // Row xi: U_xi as Cout x Cin, row-major (and a gap).
   // One output channel's pairs at a time, each step a loop over the input channels c.
   MatMap<S> u = u_.resize(kTerms, term_stride(out_channels_, in_channels_));
@@ -228,6 +230,8 @@ void WinogradConv3x3<S>::transform_weights(const S* weight) {
                    t[(3 * k + 2) * cin + c] * S(kG[l][2]);
       }
   }
+  u_data_ = u.data();
+  u_stamp_.set(weight, values);  // last: U is complete
 }
 
 template <class S>
@@ -349,7 +353,7 @@ void WinogradConv3x3<S>::forward(const S* weight, const S* bias, ConstMatRef<S> 
     const Index v_terms = term_stride(cin, columns), m_terms = term_stride(cout, columns);
     m_.resize(kTerms, m_terms);
     for (int xi = 0; xi < kTerms; ++xi) {
-      const ConstMatMap<S> u(u_.view().data() + xi * u_.cols(), cout, cin);
+      const ConstMatMap<S> u(u_data_ + xi * term_stride(cout, cin), cout, cin);
       const ConstMatMap<S> v(v_.view().data() + xi * v_terms, cin, columns);
       gemm<S>(u, Op::kPlain, v, Op::kPlain,
               MatMap<S>(m_.view().data() + xi * m_terms, cout, columns),
@@ -363,22 +367,22 @@ template <class S>
 void WinogradConv3x3<S>::backward(const S* weight, ConstMatRef<S> x, ConstMatRef<S> dy,
                                   S* weight_grad, S* bias_grad, S* dx, Index dx_stride,
                                   bool relu_input) {
-  transform_weights(weight);
   const Index batch = x.rows(), chunk = chunk_images(batch);
   const Index tiles = tile_rows_ * tile_cols_, cin = in_channels_, cout = out_channels_;
-  MatMap<S> du = du_.resize(kTerms, term_stride(cout, cin));  // like U
-  if (batch == 0) du.setZero();  // otherwise the first chunk's products write dU
   for (Index n = 0; n < batch; ++n)
     for (Index o = 0; o < cout; ++o)
       bias_grad[o] +=
           ConstMatMap<S>(dy.row(n).data() + o * height_ * width_, 1, height_ * width_).sum();
+  if (batch == 0) return;
+  transform_weights(weight);
+  MatMap<S> du = du_.resize(kTerms, term_stride(cout, cin));  // the first chunk writes it
   for (Index first = 0; first < batch; first += chunk) {
     const Index count = std::min(chunk, batch - first), columns = count * tiles;
     transform_inputs(x.row(first).data(), x.outerStride(), count);
     transform_output_grads(dy.row(first).data(), dy.outerStride(), count);
     const Index v_terms = term_stride(cin, columns), m_terms = term_stride(cout, columns);
     for (int xi = 0; xi < kTerms; ++xi) {
-      const ConstMatMap<S> u(u_.view().data() + xi * u_.cols(), cout, cin);
+      const ConstMatMap<S> u(u_data_ + xi * term_stride(cout, cin), cout, cin);
       MatMap<S> v(v_.view().data() + xi * v_terms, cin, columns);
       const ConstMatMap<S> dm(m_.view().data() + xi * m_terms, cout, columns);
       gemm<S>(dm, Op::kPlain, v, Op::kTransposed, MatMap<S>(du.data() + xi * du.cols(), cout, cin),

@@ -27,10 +27,9 @@
 // the channel roles exchanged: g_{o,c}[i][j] = W[c][o][2 - i][2 - j].
 #pragma once
 
-#include <vector>
-
 #include "nn/buffer.hpp"
 #include "nn/tensor.hpp"
+#include "nn/weight_stamp.hpp"
 
 namespace corrmp::nn {
 
@@ -57,6 +56,14 @@ class WinogradConv3x3 {
   void backward(const S* weight, ConstMatRef<S> x, ConstMatRef<S> dy, S* weight_grad, S* bias_grad,
                 S* dx, Index dx_stride, bool relu_input = false);
 
+  /// Computes U unless it holds the transform of these very weights, or, with a weight source,
+  /// the source does (forward and backward call it first).
+  void transform_weights(const S* weight);
+  /// For a data-parallel replica: use `source`'s U whenever it is of the same weights. The source
+  /// must outlive this layer and not transform other weights while this layer runs (the trainer
+  /// transforms its model's weights before the replicas run).
+  void share_weight_transforms(const WinogradConv3x3* source) { weight_source_ = source; }
+
  private:
   static constexpr int kTile = 4;    // output tile side
   static constexpr int kPatch = 6;   // input patch side, kTile + 2
@@ -67,9 +74,6 @@ class WinogradConv3x3 {
   // Where the 9 weights of g_{o,c} are in the weight matrix: g_{o,c}[i][j] at offset 3 i + j
   // (KernelLayout::kConv) or 8 - (3 i + j) (kTransposed).
   Index pair_offset(Index o, Index c) const;
-  // U_xi for every xi (kTerms matrices Cout x Cin), unless U already holds the transform of
-  // these very weights (bit for bit): backward follows forward with the same weights.
-  void transform_weights(const S* weight);
   // Images of the batch per chunk.
   Index chunk_images(Index batch) const;
   // Padded row y of a plane laid out as plane_.
@@ -90,12 +94,14 @@ class WinogradConv3x3 {
   Index tile_rows_, tile_cols_;  // ceil(H / 4), ceil(W / 4)
   Index column_stride_;          // (tile_rows + 1) tile_cols: one patch column's run, see plane_
   Index block_;                  // 6 column_stride_: one row phase of plane_
-  Buffer<S> u_;                  // U
-  std::vector<S> u_weights_;     // the weights U was computed from (empty: U not computed)
-  Buffer<S> v_;                  // V, then dV, of one chunk (kTerms rows, term_stride apart)
-  Buffer<S> m_;                  // M or dM of one chunk (likewise)
-  Buffer<S> du_;                 // dU summed over the batch
-  Buffer<S> transposed_;         // V_xi^T of one chunk (nn/gemm.hpp's scratch)
+  Buffer<S> u_;                  // U (kTerms matrices Cout x Cin, term_stride apart)
+  WeightStamp<S> u_stamp_;       // the weights of u_
+  const S* u_data_ = nullptr;    // the U in use: u_'s or the weight source's
+  const WinogradConv3x3* weight_source_ = nullptr;
+  Buffer<S> v_;           // V, then dV, of one chunk (kTerms rows, term_stride apart)
+  Buffer<S> m_;           // M or dM of one chunk (likewise)
+  Buffer<S> du_;          // dU summed over the batch
+  Buffer<S> transposed_;  // V_xi^T of one chunk (nn/gemm.hpp's scratch)
   // One channel padded by a zero row on top and a zero column on the left, each row y split into
   // the six patch columns of its tiles (split_patch_columns) and stored by row phase: column q of
   // tile tx of padded row y at (y mod 4) block + (q (tile_rows + 1) + y div 4) tile_cols + tx.

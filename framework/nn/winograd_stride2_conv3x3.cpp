@@ -7,182 +7,34 @@
 #include "nn/winograd_stride2_conv3x3.hpp"
 
 #include <algorithm>
-#include <cstring>
 #include <limits>
 #include <stdexcept>
 
 #include "nn/gemm.hpp"
+#include "nn/pixel_major.hpp"
+#include "nn/relu_fusion.hpp"
 #include "nn/transpose.hpp"
+#include "nn/winograd_stride2_transforms.hpp"
 
 namespace corrmp::nn {
+
+using namespace stride2;  // the 1-D maps
+
 namespace {
 
-// The chunk's term matrices hold at most about this many values each (1 MB of floats).
-constexpr Index kChunkValues = Index(1) << 14;
-constexpr Index kMinChunkTiles = 32;
+// Tiles per chunk (whole images, at least one): the products of a chunk's terms have this many
+// rows, and its 81 term matrices stay in the core's L2 cache (with 64 channels, 81 x 64 x 32
+// floats, 660 KB). Chunks of 8 to 64 tiles gave the same training speed within 2% (Zen 4).
+constexpr Index kChunkTiles = 32;
 // Gap between the 81 term matrices of a chunk: the transforms write (or read) all 81 at the same
 // offset, and matrices a power of two apart would fall into the same cache sets.
 constexpr Index kTermGap = 16;
 
-// The arrays a transform reads and writes are distinct, which the compiler cannot prove.
-#if defined(__clang__)
-#define CORRMP_INDEPENDENT_LANES _Pragma("clang loop vectorize(assume_safety)")
-#elif defined(__GNUC__)
-#define CORRMP_INDEPENDENT_LANES _Pragma("GCC ivdep")
-#else
-#define CORRMP_INDEPENDENT_LANES
-#endif
-
-// The 1-D maps of the header, each on n lanes at once: input k of lane c at in[k in_step + c],
-// output k to out[k out_step + c].
-
-// B9^T s (9 -> 9): the even inputs s_1 s_3 s_5 s_7, then F(4, 2)'s B^T on e_k = s_2k.
-template <class S>
-void input_9(Index n, const S* __restrict in, Index in_step, S* __restrict out, Index out_step) {
-  CORRMP_INDEPENDENT_LANES
-  for (Index c = 0; c < n; ++c) {
-    const S e0 = in[c], e1 = in[2 * in_step + c], e2 = in[4 * in_step + c],
-            e3 = in[6 * in_step + c], e4 = in[8 * in_step + c];
-    out[c] = in[in_step + c];
-    out[out_step + c] = in[3 * in_step + c];
-    out[2 * out_step + c] = in[5 * in_step + c];
-    out[3 * out_step + c] = in[7 * in_step + c];
-    out[4 * out_step + c] = S(2) * (e0 - e2) + (e3 - e1);
-    out[5 * out_step + c] = S(2) * e1 + (e2 - e3);
-    out[6 * out_step + c] = S(3) * e2 - S(2) * e1 - e3;
-    out[7 * out_step + c] = e3 - e1;
-    out[8 * out_step + c] = S(2) * (e1 - e3) + (e4 - e2);
-  }
-}
-
-// B9 d, the adjoint of input_9 (9 -> 9): output 0 added to out with kAddFirst, outputs 1-8 with
-// kAddRest, the others written.
-template <bool kAddFirst, bool kAddRest, class S>
-void input_grad_9(Index n, const S* __restrict in, Index in_step, S* __restrict out,
-                  Index out_step) {
-  CORRMP_INDEPENDENT_LANES
-  for (Index c = 0; c < n; ++c) {
-    const S d4 = in[4 * in_step + c], d5 = in[5 * in_step + c], d6 = in[6 * in_step + c],
-            d7 = in[7 * in_step + c], d8 = in[8 * in_step + c];
-    const S r[9] = {S(2) * d4,
-                    in[c],
-                    S(2) * (d5 - d6 + d8) - (d4 + d7),
-                    in[in_step + c],
-                    (d5 - d8) + S(3) * d6 - S(2) * d4,
-                    in[2 * in_step + c],
-                    (d4 - d5) + (d7 - d6) - S(2) * d8,
-                    in[3 * in_step + c],
-                    d8};
-    out[c] = kAddFirst ? out[c] + r[0] : r[0];
-    for (int k = 1; k < 9; ++k)
-      out[k * out_step + c] = kAddRest ? out[k * out_step + c] + r[k] : r[k];
-  }
-}
-
-// A9^T m (9 -> 4).
-template <class S>
-void output_9(Index n, const S* __restrict in, Index in_step, S* __restrict out, Index out_step) {
-  CORRMP_INDEPENDENT_LANES
-  for (Index c = 0; c < n; ++c) {
-    const S m5 = in[5 * in_step + c], m6 = in[6 * in_step + c], m7 = in[7 * in_step + c];
-    const S sum = m5 + m6, diff = m5 - m6;
-    out[c] = in[c] + in[4 * in_step + c] + sum + m7;
-    out[out_step + c] = in[in_step + c] + diff + S(2) * m7;
-    out[2 * out_step + c] = in[2 * in_step + c] + sum + S(4) * m7;
-    out[3 * out_step + c] = in[3 * in_step + c] + diff + S(8) * m7 + in[8 * in_step + c];
-  }
-}
-
-// A9 g, the adjoint of output_9 (4 -> 9).
-template <class S>
-void output_grad_4(Index n, const S* __restrict in, Index in_step, S* __restrict out,
-                   Index out_step) {
-  CORRMP_INDEPENDENT_LANES
-  for (Index c = 0; c < n; ++c) {
-    const S g0 = in[c], g1 = in[in_step + c], g2 = in[2 * in_step + c], g3 = in[3 * in_step + c];
-    out[c] = g0;
-    out[out_step + c] = g1;
-    out[2 * out_step + c] = g2;
-    out[3 * out_step + c] = g3;
-    out[4 * out_step + c] = g0;
-    out[5 * out_step + c] = (g0 + g2) + (g1 + g3);
-    out[6 * out_step + c] = (g0 + g2) - (g1 + g3);
-    out[7 * out_step + c] = g0 + S(2) * g1 + S(4) * g2 + S(8) * g3;
-    out[8 * out_step + c] = g3;
-  }
-}
-
-// The distinct entries of G9 w (3 -> 6): the middle tap (G9's rows 0-3), then F(4, 2)'s G on the
-// outer taps (rows 4-8).
-template <class S>
-void weight_6(Index n, const S* __restrict in, Index in_step, S* __restrict out, Index out_step) {
-  const S half(0.5), sixth(1.0 / 6.0), third(1.0 / 3.0);
-  CORRMP_INDEPENDENT_LANES
-  for (Index c = 0; c < n; ++c) {
-    const S w0 = in[c], w2 = in[2 * in_step + c];
-    out[c] = in[in_step + c];
-    out[out_step + c] = half * w0;
-    out[2 * out_step + c] = half * (w0 + w2);
-    out[3 * out_step + c] = sixth * (w0 - w2);
-    out[4 * out_step + c] = sixth * w0 + third * w2;
-    out[5 * out_step + c] = w2;
-  }
-}
-
-// The adjoint of weight_6 (6 -> 3), entry 0 holding the sum over G9's rows 0-3.
-template <class S>
-void weight_grad_6(Index n, const S* __restrict in, Index in_step, S* __restrict out,
-                   Index out_step) {
-  const S half(0.5), sixth(1.0 / 6.0), third(1.0 / 3.0);
-  CORRMP_INDEPENDENT_LANES
-  for (Index c = 0; c < n; ++c) {
-    const S d2 = in[2 * in_step + c], d3 = in[3 * in_step + c], d4 = in[4 * in_step + c];
-    out[c] = half * (in[in_step + c] + d2) + sixth * (d3 + d4);
-    out[out_step + c] = in[c];
-    out[2 * out_step + c] = half * d2 - sixth * d3 + third * d4 + in[5 * in_step + c];
-  }
-}
-
-// Which of the 6 distinct entries of G9 w term xi of a dimension is.
-constexpr int weight_entry(int xi) { return xi < 4 ? 0 : xi - 3; }
-
-// Channel-major rows x cols pixels (channel c at image + c rows cols) into a pixel-major plane:
-// pixel (h, w) at plane + (h plane_cols + w) channels.
-template <class S>
-void to_pixel_major(const S* image, Index channels, Index rows, Index cols, S* plane,
-                    Index plane_cols) {
-  for (Index h = 0; h < rows; ++h)
-    transpose(channels, cols, image + h * cols, rows * cols, plane + h * plane_cols * channels,
-              channels);
-}
-
-// The inverse, plus bias[c] unless bias is null, through max(., floor).
-template <class S>
-void from_pixel_major(const S* plane, Index plane_cols, Index channels, Index rows, Index cols,
-                      const S* bias, S floor, S* image) {
-  const Index pixels = rows * cols;
-  for (Index h = 0; h < rows; ++h)
-    transpose(cols, channels, plane + h * plane_cols * channels, channels, image + h * cols,
-              pixels);
-  if (bias == nullptr && floor == -std::numeric_limits<S>::infinity()) return;
-  for (Index c = 0; c < channels; ++c) {
-    const S b = bias == nullptr ? S(0) : bias[c];
-    S* __restrict out = image + c * pixels;
-    for (Index i = 0; i < pixels; ++i) out[i] = std::max(out[i] + b, floor);
-  }
-}
-
-// image[i] = 0 where keep[i] <= 0 (the gradient through a ReLU whose output is keep).
-template <class S>
-void mask_by(const S* __restrict keep, Index size, S* __restrict image) {
-  for (Index i = 0; i < size; ++i) image[i] = keep[i] > S(0) ? image[i] : S(0);
-}
-
 }  // namespace
 
 template <class S>
-WinogradStrideTwoConv3x3<S>::WinogradStrideTwoConv3x3(Index full_channels, Index half_channels,
-                                                      Index height, Index width)
+WinogradStride2Conv3x3<S>::WinogradStride2Conv3x3(Index full_channels, Index half_channels,
+                                                  Index height, Index width)
     : full_channels_(full_channels),
       half_channels_(half_channels),
       height_(height),
@@ -194,7 +46,7 @@ WinogradStrideTwoConv3x3<S>::WinogradStrideTwoConv3x3(Index full_channels, Index
       padded_rows_(8 * tile_rows_ + 1),
       padded_cols_(8 * tile_cols_ + 1) {
   if (full_channels < 1 || half_channels < 1 || height < 1 || width < 1)
-    throw std::invalid_argument("WinogradStrideTwoConv3x3: empty shape");
+    throw std::invalid_argument("WinogradStride2Conv3x3: empty shape");
   full_plane_ = Vec<S>::Zero(padded_rows_ * padded_cols_ * full_channels);
   full_sums_ = Vec<S>::Zero(padded_rows_ * padded_cols_ * full_channels);
   half_plane_ = Vec<S>::Zero(16 * tile_rows_ * tile_cols_ * half_channels);
@@ -203,19 +55,24 @@ WinogradStrideTwoConv3x3<S>::WinogradStrideTwoConv3x3(Index full_channels, Index
 }
 
 template <class S>
-Index WinogradStrideTwoConv3x3<S>::term_stride(Index rows, Index columns) {
-  return rows * columns + kTermGap;
+Index WinogradStride2Conv3x3<S>::term_stride(Index channels, Index count) {
+  return channels * count + kTermGap;
 }
 
 template <class S>
-void WinogradStrideTwoConv3x3<S>::transform_weights(const S* weight) {
+void WinogradStride2Conv3x3<S>::transform_weights(const S* weight) {
   const Index cin = full_channels_, cout = half_channels_;
-  // Compared as bytes, so that a NaN or a zero's sign counts as a change.
   const size_t values = static_cast<size_t>(9 * cin * cout);
-  if (u_weights_.size() == values &&
-      std::memcmp(weight, u_weights_.data(), values * sizeof(S)) == 0)
+  if (u_stamp_.matches(weight, values)) {
+    u_data_ = u_.view().data();
+    ut_data_ = ut_.view().data();
     return;
-  u_weights_.assign(weight, weight + values);
+  }
+  if (weight_source_ != nullptr && weight_source_->u_stamp_.matches(weight, values)) {
+    u_data_ = weight_source_->u_data_;
+    ut_data_ = weight_source_->ut_data_;
+    return;
+  }
   const Index stride = term_stride(cout, cin);
   S* u = u_.resize(kWeightTerms, stride).data();
   S* g = stage_.data();   // g_{o,c}[a][b] at g[(3 a + b) cin + c]
@@ -231,25 +88,25 @@ void WinogradStrideTwoConv3x3<S>::transform_weights(const S* weight) {
   }
   S* ut = ut_.resize(kWeightTerms, stride).data();
   for (int q = 0; q < kWeightTerms; ++q)
-    nn::transpose(cout, cin, u + q * stride, cin, ut + q * stride, cout);
+    transpose(cout, cin, u + q * stride, cin, ut + q * stride, cout);
+  u_data_ = u;
+  ut_data_ = ut;
+  u_stamp_.set(weight, values);  // last: the terms are complete
 }
 
 template <class S>
-int WinogradStrideTwoConv3x3<S>::weight_term(int xi) {
+int WinogradStride2Conv3x3<S>::weight_term(int xi) {
   return 6 * weight_entry(xi / kSide) + weight_entry(xi % kSide);
 }
 
 template <class S>
-Index WinogradStrideTwoConv3x3<S>::chunk_images(Index batch) const {
-  const Index per_image =
-      kTerms * std::max(full_channels_, half_channels_) * tile_rows_ * tile_cols_;
+Index WinogradStride2Conv3x3<S>::chunk_images(Index batch) const {
   const Index tiles = tile_rows_ * tile_cols_;
-  const Index images = std::max(kChunkValues / per_image, (kMinChunkTiles + tiles - 1) / tiles);
-  return std::max<Index>(1, std::min(batch, images));
+  return std::max<Index>(1, std::min(batch, (kChunkTiles + tiles - 1) / tiles));
 }
 
 template <class S>
-void WinogradStrideTwoConv3x3<S>::full_to_terms(const S* images, Index stride, Index count) {
+void WinogradStride2Conv3x3<S>::full_to_terms(const S* images, Index stride, Index count) {
   const Index C = full_channels_, TW = tile_cols_, T = tile_rows_ * TW, columns = count * T;
   const Index terms = term_stride(C, columns);
   S* v = v_.resize(kTerms, terms).data();
@@ -271,7 +128,7 @@ void WinogradStrideTwoConv3x3<S>::full_to_terms(const S* images, Index stride, I
 }
 
 template <class S>
-void WinogradStrideTwoConv3x3<S>::half_to_terms(const S* images, Index stride, Index count) {
+void WinogradStride2Conv3x3<S>::half_to_terms(const S* images, Index stride, Index count) {
   const Index O = half_channels_, TW = tile_cols_, T = tile_rows_ * TW, columns = count * T;
   const Index terms = term_stride(O, columns), plane_cols = 4 * TW;
   S* m = m_.resize(kTerms, terms).data();
@@ -292,13 +149,12 @@ void WinogradStrideTwoConv3x3<S>::half_to_terms(const S* images, Index stride, I
 }
 
 template <class S>
-void WinogradStrideTwoConv3x3<S>::terms_to_half(Index count, S* images, Index stride, const S* bias,
-                                                bool relu, const S* keep, Index keep_stride) {
+void WinogradStride2Conv3x3<S>::terms_to_half(Index count, S* images, Index stride, const S* bias,
+                                              bool relu, const S* keep, Index keep_stride) {
   const Index O = half_channels_, TW = tile_cols_, T = tile_rows_ * TW, columns = count * T;
   const Index terms = term_stride(O, columns), plane_cols = 4 * TW;
   const S* m = m_.view().data();
   S* rows = stage_.data();  // A9^T along eta: value j of term row xi at (4 xi + j) O
-  const S floor = relu ? S(0) : -std::numeric_limits<S>::infinity();
   for (Index n = 0; n < count; ++n) {
     for (Index ty = 0; ty < tile_rows_; ++ty)
       for (Index tx = 0; tx < TW; ++tx) {
@@ -309,21 +165,19 @@ void WinogradStrideTwoConv3x3<S>::terms_to_half(Index count, S* images, Index st
           output_9(O, rows + j * O, 4 * O,
                    half_out_.data() + ((4 * ty) * plane_cols + 4 * tx + j) * O, plane_cols * O);
       }
-    S* image = images + n * stride;
-    from_pixel_major(half_out_.data(), plane_cols, O, half_height_, half_width_, bias, floor,
-                     image);
-    if (keep != nullptr) mask_by(keep + n * keep_stride, half_size(), image);
+    from_pixel_major(half_out_.data(), plane_cols, O, half_height_, half_width_, bias, relu,
+                     images + n * stride);
   }
+  if (keep != nullptr) mask_by_relu_output(keep, keep_stride, count, half_size(), images, stride);
 }
 
 template <class S>
-void WinogradStrideTwoConv3x3<S>::terms_to_full(Index count, S* images, Index stride, const S* bias,
-                                                bool relu, const S* keep, Index keep_stride) {
+void WinogradStride2Conv3x3<S>::terms_to_full(Index count, S* images, Index stride, const S* bias,
+                                              bool relu, const S* keep, Index keep_stride) {
   const Index C = full_channels_, TW = tile_cols_, T = tile_rows_ * TW, columns = count * T;
   const Index terms = term_stride(C, columns);
   const S* v = v_.view().data();
-  S* rows = stage_.data();  // B9 along eta: patch column v of term row xi at (9 xi + v) C
-  const S floor = relu ? S(0) : -std::numeric_limits<S>::infinity();
+  S* rows = stage_.data();  // B9 along eta: patch column col of term row xi at (9 xi + col) C
   for (Index n = 0; n < count; ++n) {
     // Patches overlap by one pixel: tiles in order, each adds its first patch row to what the
     // tile above wrote and its first patch column to what the tile on the left wrote, and writes
@@ -346,39 +200,38 @@ void WinogradStrideTwoConv3x3<S>::terms_to_full(Index count, S* images, Index st
             input_grad_9<false, false>(C, in, kSide * C, patch + col * C, step);
         }
       }
-    S* image = images + n * stride;
     from_pixel_major(full_sums_.data() + (padded_cols_ + 1) * C, padded_cols_, C, height_, width_,
-                     bias, floor, image);
-    if (keep != nullptr) mask_by(keep + n * keep_stride, full_size(), image);
+                     bias, relu, images + n * stride);
   }
+  if (keep != nullptr) mask_by_relu_output(keep, keep_stride, count, full_size(), images, stride);
 }
 
 template <class S>
-void WinogradStrideTwoConv3x3<S>::multiply_forward(Index columns) {
+void WinogradStride2Conv3x3<S>::multiply_forward(Index columns) {
   const Index C = full_channels_, O = half_channels_;
   const Index v_terms = term_stride(C, columns), m_terms = term_stride(O, columns);
   const Index u_terms = term_stride(O, C);
   m_.resize(kTerms, m_terms);
   for (int xi = 0; xi < kTerms; ++xi)
     gemm<S>(ConstMatMap<S>(v_.view().data() + xi * v_terms, columns, C), Op::kPlain,
-            ConstMatMap<S>(ut_.view().data() + weight_term(xi) * u_terms, C, O), Op::kPlain,
+            ConstMatMap<S>(ut_data_ + weight_term(xi) * u_terms, C, O), Op::kPlain,
             MatMap<S>(m_.view().data() + xi * m_terms, columns, O), /*accumulate=*/false, scratch_);
 }
 
 template <class S>
-void WinogradStrideTwoConv3x3<S>::multiply_adjoint(Index columns) {
+void WinogradStride2Conv3x3<S>::multiply_adjoint(Index columns) {
   const Index C = full_channels_, O = half_channels_;
   const Index v_terms = term_stride(C, columns), m_terms = term_stride(O, columns);
   const Index u_terms = term_stride(O, C);
   v_.resize(kTerms, v_terms);
   for (int xi = 0; xi < kTerms; ++xi)
     gemm<S>(ConstMatMap<S>(m_.view().data() + xi * m_terms, columns, O), Op::kPlain,
-            ConstMatMap<S>(u_.view().data() + weight_term(xi) * u_terms, O, C), Op::kPlain,
+            ConstMatMap<S>(u_data_ + weight_term(xi) * u_terms, O, C), Op::kPlain,
             MatMap<S>(v_.view().data() + xi * v_terms, columns, C), /*accumulate=*/false, scratch_);
 }
 
 template <class S>
-void WinogradStrideTwoConv3x3<S>::accumulate_weight_terms(Index columns, bool first_chunk) {
+void WinogradStride2Conv3x3<S>::accumulate_weight_terms(Index columns, bool first_chunk) {
   const Index C = full_channels_, O = half_channels_;
   const Index v_terms = term_stride(C, columns), m_terms = term_stride(O, columns);
   const Index u_terms = term_stride(O, C);
@@ -395,7 +248,7 @@ void WinogradStrideTwoConv3x3<S>::accumulate_weight_terms(Index columns, bool fi
 }
 
 template <class S>
-void WinogradStrideTwoConv3x3<S>::add_weight_grad(S* weight_grad) {
+void WinogradStride2Conv3x3<S>::add_weight_grad(S* weight_grad) {
   const Index cin = full_channels_, cout = half_channels_, stride = term_stride(cout, cin);
   const S* dut = dut_.view().data();
   S* rows = stage_.data();      // G6^T along q: (p, b) of channel c at (3 p + b) cout + o
@@ -413,8 +266,8 @@ void WinogradStrideTwoConv3x3<S>::add_weight_grad(S* weight_grad) {
 }
 
 template <class S>
-void WinogradStrideTwoConv3x3<S>::convolve(const S* weight, const S* bias, ConstMatRef<S> full,
-                                           MatRef<S> half, bool relu) {
+void WinogradStride2Conv3x3<S>::convolve(const S* weight, const S* bias, ConstMatRef<S> full,
+                                         MatRef<S> half, bool relu) {
   transform_weights(weight);
   const Index batch = full.rows(), chunk = chunk_images(batch), tiles = tile_rows_ * tile_cols_;
   for (Index first = 0; first < batch; first += chunk) {
@@ -426,10 +279,10 @@ void WinogradStrideTwoConv3x3<S>::convolve(const S* weight, const S* bias, Const
 }
 
 template <class S>
-void WinogradStrideTwoConv3x3<S>::convolve_backward(const S* weight, ConstMatRef<S> full,
-                                                    ConstMatRef<S> half_grad, S* weight_grad,
-                                                    S* bias_grad, S* full_grad,
-                                                    Index full_grad_stride, bool relu_input) {
+void WinogradStride2Conv3x3<S>::convolve_backward(const S* weight, ConstMatRef<S> full,
+                                                  ConstMatRef<S> half_grad, S* weight_grad,
+                                                  S* bias_grad, S* full_grad,
+                                                  Index full_grad_stride, bool relu_input) {
   const Index batch = full.rows(), chunk = chunk_images(batch), tiles = tile_rows_ * tile_cols_;
   const Index half_pixels = half_height_ * half_width_;
   for (Index n = 0; n < batch; ++n)
@@ -452,8 +305,9 @@ void WinogradStrideTwoConv3x3<S>::convolve_backward(const S* weight, ConstMatRef
 }
 
 template <class S>
-void WinogradStrideTwoConv3x3<S>::transpose(const S* weight, const S* bias, ConstMatRef<S> half,
-                                            MatRef<S> full, bool relu) {
+void WinogradStride2Conv3x3<S>::convolve_transposed(const S* weight, const S* bias,
+                                                    ConstMatRef<S> half, MatRef<S> full,
+                                                    bool relu) {
   transform_weights(weight);
   const Index batch = half.rows(), chunk = chunk_images(batch), tiles = tile_rows_ * tile_cols_;
   for (Index first = 0; first < batch; first += chunk) {
@@ -465,10 +319,11 @@ void WinogradStrideTwoConv3x3<S>::transpose(const S* weight, const S* bias, Cons
 }
 
 template <class S>
-void WinogradStrideTwoConv3x3<S>::transpose_backward(const S* weight, ConstMatRef<S> half,
-                                                     ConstMatRef<S> full_grad, S* weight_grad,
-                                                     S* bias_grad, S* half_grad,
-                                                     Index half_grad_stride, bool relu_input) {
+void WinogradStride2Conv3x3<S>::convolve_transposed_backward(const S* weight, ConstMatRef<S> half,
+                                                             ConstMatRef<S> full_grad,
+                                                             S* weight_grad, S* bias_grad,
+                                                             S* half_grad, Index half_grad_stride,
+                                                             bool relu_input) {
   const Index batch = half.rows(), chunk = chunk_images(batch), tiles = tile_rows_ * tile_cols_;
   const Index full_pixels = height_ * width_;
   for (Index n = 0; n < batch; ++n)
@@ -489,7 +344,7 @@ void WinogradStrideTwoConv3x3<S>::transpose_backward(const S* weight, ConstMatRe
   add_weight_grad(weight_grad);
 }
 
-template class WinogradStrideTwoConv3x3<float>;
-template class WinogradStrideTwoConv3x3<double>;
+template class WinogradStride2Conv3x3<float>;
+template class WinogradStride2Conv3x3<double>;
 
 }  // namespace corrmp::nn

@@ -37,10 +37,9 @@
 // without a transpose.
 #pragma once
 
-#include <vector>
-
 #include "nn/buffer.hpp"
 #include "nn/tensor.hpp"
+#include "nn/weight_stamp.hpp"
 
 namespace corrmp::nn {
 
@@ -48,14 +47,14 @@ namespace corrmp::nn {
 /// channels its products are short (3 terms each for the autoencoder's RGB input) and im2col's
 /// (27 terms) run faster: measured on the first layer (3 -> 32 channels, 64x64, 8 images, one
 /// Zen 4 core), 0.45 ms forward against 0.25 ms.
-constexpr Index kMinStrideTwoWinogradChannels = 16;
+constexpr Index kMinStride2WinogradChannels = 16;
 
 template <class S>
-class WinogradStrideTwoConv3x3 {
+class WinogradStride2Conv3x3 {
  public:
   /// A kernel 3, stride 2, padding 1 convolution from full_channels x height x width images to
   /// half_channels x ceil(height / 2) x ceil(width / 2) images.
-  WinogradStrideTwoConv3x3(Index full_channels, Index half_channels, Index height, Index width);
+  WinogradStride2Conv3x3(Index full_channels, Index half_channels, Index height, Index width);
 
   Index full_size() const { return full_channels_ * height_ * width_; }
   Index half_size() const { return half_channels_ * half_height_ * half_width_; }
@@ -71,12 +70,22 @@ class WinogradStrideTwoConv3x3 {
                          bool relu_input);
   /// full = conv^T(half) + bias (full_channels entries), through a ReLU with relu: the transposed
   /// convolution (nn/conv_transpose2d.hpp's forward).
-  void transpose(const S* weight, const S* bias, ConstMatRef<S> half, MatRef<S> full, bool relu);
-  /// Accumulates dL/dW and dL/db of transpose, and overwrites half_grad (N rows half_grad_stride
-  /// apart) with dL/dhalf; with relu_input, half is a ReLU's output and half_grad is masked.
-  void transpose_backward(const S* weight, ConstMatRef<S> half, ConstMatRef<S> full_grad,
-                          S* weight_grad, S* bias_grad, S* half_grad, Index half_grad_stride,
-                          bool relu_input);
+  void convolve_transposed(const S* weight, const S* bias, ConstMatRef<S> half, MatRef<S> full,
+                           bool relu);
+  /// Accumulates dL/dW and dL/db of convolve_transposed, and overwrites half_grad (N rows
+  /// half_grad_stride apart) with dL/dhalf; with relu_input, half is a ReLU's output and half_grad
+  /// is masked.
+  void convolve_transposed_backward(const S* weight, ConstMatRef<S> half, ConstMatRef<S> full_grad,
+                                    S* weight_grad, S* bias_grad, S* half_grad,
+                                    Index half_grad_stride, bool relu_input);
+
+  /// Computes the weight terms unless they are of these very weights, or, with a weight source,
+  /// the source's are (the other methods call it first).
+  void transform_weights(const S* weight);
+  /// For a data-parallel replica: use `source`'s weight terms whenever they are of the same
+  /// weights. The source must outlive this layer and not transform other weights while this
+  /// layer runs (the trainer transforms its model's weights before the replicas run).
+  void share_weight_transforms(const WinogradStride2Conv3x3* source) { weight_source_ = source; }
 
  private:
   static constexpr int kSide = 9;    // terms per dimension
@@ -86,11 +95,9 @@ class WinogradStrideTwoConv3x3 {
   static constexpr int kWeightTerms = 36;
   static int weight_term(int xi);
 
-  // Distance between the term matrices of a chunk (columns x rows each).
-  static Index term_stride(Index rows, Index columns);
-  // The weight terms (O x C) and their transposes (C x O), unless they hold the transform of
-  // these very weights.
-  void transform_weights(const S* weight);
+  // Distance between the term matrices of a chunk (count x channels each, or the weight terms'
+  // channels x count).
+  static Index term_stride(Index channels, Index count);
   // Images of the batch per chunk.
   Index chunk_images(Index batch) const;
   // V^T of `count` full-resolution images (rows `stride` apart) into v_.
@@ -115,13 +122,16 @@ class WinogradStrideTwoConv3x3 {
   Index full_channels_, half_channels_, height_, width_, half_height_, half_width_;
   Index tile_rows_, tile_cols_;      // ceil(half_height / 4), ceil(half_width / 4)
   Index padded_rows_, padded_cols_;  // 8 tile_rows + 1, 8 tile_cols + 1: the full side padded
-  Buffer<S> u_;                      // U_xi, O x C each
-  Buffer<S> ut_;                     // U_xi^T, C x O each
-  std::vector<S> u_weights_;         // the weights U was computed from (empty: none yet)
-  Buffer<S> v_;                      // V^T (or dV^T) of one chunk: 81 matrices tiles x C
-  Buffer<S> m_;                      // M^T (or dM^T) of one chunk: 81 matrices tiles x O
-  Buffer<S> dut_;                    // dU_xi^T summed over the batch, C x O each
-  Buffer<S> scratch_;                // nn/gemm.hpp's
+  Buffer<S> u_;                      // the weight terms, O x C each
+  Buffer<S> ut_;                     // their transposes, C x O each
+  WeightStamp<S> u_stamp_;           // the weights of u_ and ut_
+  const S* u_data_ = nullptr;        // the weight terms in use: u_'s or the weight source's
+  const S* ut_data_ = nullptr;       // likewise, transposed
+  const WinogradStride2Conv3x3* weight_source_ = nullptr;
+  Buffer<S> v_;        // V^T (or dV^T) of one chunk: 81 matrices tiles x C
+  Buffer<S> m_;        // M^T (or dM^T) of one chunk: 81 matrices tiles x O
+  Buffer<S> dut_;      // dU^T per weight term summed over the batch, C x O each
+  Buffer<S> scratch_;  // nn/gemm.hpp's
   // One full-resolution image pixel-major with a zero border: pixel (h, w) at
   // ((h + 1) padded_cols + w + 1) C, up to 8 tile_rows + 1 rows and columns.
   Vec<S> full_plane_;
@@ -132,7 +142,7 @@ class WinogradStrideTwoConv3x3 {
   Vec<S> stage_;     // one tile's terms transformed along one dimension: 81 x max(C, O)
 };
 
-extern template class WinogradStrideTwoConv3x3<float>;
-extern template class WinogradStrideTwoConv3x3<double>;
+extern template class WinogradStride2Conv3x3<float>;
+extern template class WinogradStride2Conv3x3<double>;
 
 }  // namespace corrmp::nn

@@ -111,10 +111,21 @@ INSTANTIATE_TEST_SUITE_P(StridePadding, Conv2dGrad, ::testing::ValuesIn(kCases),
 // Kernel 3, stride 2, padding 1 with 16 channels or more on both sides runs the stride-2
 // Winograd algorithm (nn/winograd_stride2_conv3x3.hpp): the layer's results and gradients must be
 // the same functions as on the im2col path.
+TEST(Conv2d, ChoosesItsAlgorithmByKernelStrideAndChannels) {
+  Rng rng(26);
+  EXPECT_EQ(Conv2d<float>({3, 32, 3, 2, 1}, 8, 8, rng).algorithm(), ConvAlgorithm::kIm2col);
+  EXPECT_EQ(Conv2d<float>({15, 32, 3, 2, 1}, 8, 8, rng).algorithm(), ConvAlgorithm::kIm2col);
+  EXPECT_EQ(Conv2d<float>({16, 16, 3, 2, 1}, 8, 8, rng).algorithm(),
+            ConvAlgorithm::kWinogradStride2);
+  EXPECT_EQ(Conv2d<float>({16, 16, 3, 2, 0}, 8, 8, rng).algorithm(), ConvAlgorithm::kIm2col);
+  EXPECT_EQ(Conv2d<float>({3, 4, 3, 1, 1}, 8, 8, rng).algorithm(), ConvAlgorithm::kWinograd);
+}
+
 TEST(Conv2d, StrideTwoWinogradPathMatchesNaiveLoopAndFiniteDifferences) {
   Rng rng(27);
   for (const Index height : {7, 8}) {
     Conv2d<double> conv({16, 16, 3, 2, 1}, height, 6, rng);
+    ASSERT_EQ(conv.algorithm(), ConvAlgorithm::kWinogradStride2);
     const Index n = 2;
     MatD x = testing::random_matrix(n, conv.input_shape().size(), rng);
     const MatD r = testing::random_matrix(n, conv.output_shape().size(), rng);

@@ -144,10 +144,21 @@ INSTANTIATE_TEST_SUITE_P(StridePadding, ConvTranspose2dAdjoint, ::testing::Value
 
 // Kernel 3, stride 2, padding 1 with 16 channels or more on both sides runs the adjoint of the
 // stride-2 Winograd convolution (nn/winograd_stride2_conv3x3.hpp), with either output padding.
+TEST(ConvTranspose2d, ChoosesItsAlgorithmByKernelStrideAndChannels) {
+  Rng rng(36);
+  EXPECT_EQ(ConvTranspose2d<float>({32, 3, 3, 2, 1, 1}, 8, 8, rng).algorithm(),
+            ConvAlgorithm::kIm2col);
+  EXPECT_EQ(ConvTranspose2d<float>({16, 16, 3, 2, 1, 1}, 8, 8, rng).algorithm(),
+            ConvAlgorithm::kWinogradStride2);
+  EXPECT_EQ(ConvTranspose2d<float>({4, 3, 3, 1, 1, 0}, 8, 8, rng).algorithm(),
+            ConvAlgorithm::kWinograd);
+}
+
 TEST(ConvTranspose2d, StrideTwoWinogradPathMatchesNaiveLoopAndFiniteDifferences) {
   Rng rng(37);
   for (const Index output_padding : {0, 1}) {
     ConvTranspose2d<double> layer({16, 16, 3, 2, 1, output_padding}, 4, 3, rng);
+    ASSERT_EQ(layer.algorithm(), ConvAlgorithm::kWinogradStride2);
     const Index n = 2;
     MatD x = testing::random_matrix(n, layer.input_shape().size(), rng);
     const MatD r = testing::random_matrix(n, layer.output_shape().size(), rng);

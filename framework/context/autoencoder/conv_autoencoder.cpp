@@ -127,6 +127,25 @@ std::vector<nn::Parameter<S>> ConvAutoencoder<S>::parameters() {
 }
 
 template <class S>
+void ConvAutoencoder<S>::transform_weights(int part, int parts) {
+  const size_t layers = encoder_convs_.size();
+  for (size_t i = static_cast<size_t>(part); i < 2 * layers; i += static_cast<size_t>(parts)) {
+    if (i < layers)
+      encoder_convs_[i].transform_weights();
+    else
+      decoder_convs_[i - layers].transform_weights();
+  }
+}
+
+template <class S>
+void ConvAutoencoder<S>::share_weight_transforms(const ConvAutoencoder& source) {
+  for (size_t i = 0; i < encoder_convs_.size(); ++i) {
+    encoder_convs_[i].share_weight_transforms(source.encoder_convs_[i]);
+    decoder_convs_[i].share_weight_transforms(source.decoder_convs_[i]);
+  }
+}
+
+template <class S>
 nn::MatMap<S> ConvAutoencoder<S>::next_gradient(nn::Index rows, nn::Index cols) {
   nn::MatMap<S> view = gradients_[next_gradient_].resize(rows, cols);
   next_gradient_ = 1 - next_gradient_;

@@ -72,6 +72,15 @@ class ConvAutoencoder {
   /// Mean squared reconstruction error over all N x image_values() entries (summed in double).
   double reconstruction_mse(nn::ConstMatRef<S> images);
 
+  /// Transforms the weights of convolutions part, part + parts, ... (encoder's then decoder's)
+  /// for their fast algorithms now (the layers do it when needed otherwise): the data-parallel
+  /// trainer's workers share this work before the replicas run.
+  void transform_weights(int part, int parts);
+  /// For a data-parallel replica of `source` (a copy of it): its convolutions use `source`'s
+  /// transformed weights whenever they are of the same weights (nn/conv2d.hpp). `source` must
+  /// outlive this model and not transform other weights while this model runs.
+  void share_weight_transforms(const ConvAutoencoder& source);
+
   /// Parameters in initialisation order, named "encoder.conv<i>.weight", "encoder.fc.bias",
   /// "decoder.fc.weight", "decoder.deconv<i>.bias" (deconv<i> mirrors conv<i>), ...
   std::vector<nn::Parameter<S>> parameters();

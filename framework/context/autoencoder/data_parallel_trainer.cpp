@@ -20,7 +20,15 @@ DataParallelTrainer::DataParallelTrainer(ConvAutoencoder<float>& model, int shar
       adam_(model.parameters(), nn::AdamOptions{learning_rate}),
       blocks_(nn::Adam<float>::ranges(adam_.parameters(), kUpdateBlock)) {
   params_.push_back(model.parameters());
-  for (auto& replica : replicas_) params_.push_back(replica.parameters());
+  for (auto& replica : replicas_) {
+    params_.push_back(replica.parameters());
+    replica.share_weight_transforms(model);
+  }
+}
+
+void DataParallelTrainer::transform_weights() {
+  if (replicas_.empty()) return;  // the model's layers transform their weights when they run
+  pool_.run([&](int w) { model_.transform_weights(w, pool_.size()); });
 }
 
 void DataParallelTrainer::reduce_and_update(size_t first, size_t last, nn::Index batch) {
@@ -45,6 +53,7 @@ void DataParallelTrainer::sync_weights(int r) {
 double DataParallelTrainer::step(nn::ConstMatRef<float> data, const int* order, nn::Index batch) {
   if (batch < 1) throw std::invalid_argument("DataParallelTrainer::step: empty minibatch");
   const int threads = shards_;
+  transform_weights();
   for_each_shard([&](int r) {
     const nn::ScopedFlushDenormals flush_denormals;
     sync_weights(r);
@@ -70,6 +79,7 @@ double DataParallelTrainer::evaluate(nn::ConstMatRef<float> data) {
   if (data.rows() == 0) throw std::invalid_argument("DataParallelTrainer::evaluate: no images");
   const int threads = shards_;
   const nn::Index rows = data.rows();
+  transform_weights();
   for_each_shard([&](int r) {
     const nn::ScopedFlushDenormals flush_denormals;
     sync_weights(r);

@@ -17,7 +17,9 @@
 // another order (and run their matrix products on other sizes), so they agree only up to float
 // rounding, which training slowly amplifies. Once every worker has seen its largest shard, a
 // step allocates nothing beyond Eigen's GEMM workspace where Eigen computes the products
-// (nn/conv2d.hpp).
+// (nn/conv2d.hpp). The convolutions' transformed weights (nn/winograd_conv3x3.hpp,
+// nn/winograd_stride2_conv3x3.hpp), the same for every shard, are computed once per step on the
+// model, the workers sharing the layers, and read by the replicas.
 #pragma once
 
 #include <cstdint>
@@ -55,6 +57,9 @@ class DataParallelTrainer {
   // Adds the non-empty shards' gradients to the model's and updates it by Adam (its step begun),
   // on the entries of blocks [first, last).
   void reduce_and_update(size_t first, size_t last, nn::Index batch);
+
+  // The model's transformed weights, each worker its share of the layers, before shards run.
+  void transform_weights();
 
   // Blocks of this many entries: on Adam's range boundaries, so that the update is exactly
   // Adam::step's.

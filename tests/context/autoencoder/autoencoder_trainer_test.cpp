@@ -185,6 +185,26 @@ TEST(AutoencoderTrainer, ThreadCountsGiveTheSameLossCurve) {
       EXPECT_NEAR(curves[t][e], curves[0][e], 1e-5 * curves[0][e]) << "threads " << t + 1;
 }
 
+// With both kinds of Winograd layers (16 channels: nn/winograd_stride2_conv3x3.hpp too), whose
+// transformed weights the replicas read from the model (data_parallel_trainer.hpp): one thread
+// without replicas and two with one agree up to float rounding.
+TEST(AutoencoderTrainer, ThreadCountsGiveTheSameLossCurveWithWinogradLayers) {
+  AutoencoderParams p = small_params();
+  p.strides = {2, 1, 2};
+  p.filters = {16, 16, 16};
+  p.epochs = 3;
+  p.batch_size = 8;
+  std::vector<std::vector<double>> curves;
+  for (int threads : {1, 2}) {
+    p.threads = threads;
+    nn::Rng init(9);
+    ConvAutoencoder<float> model(p.architecture(), init);
+    curves.push_back(train_squares(model, p, 37, 23).epoch_train_loss);
+  }
+  for (size_t e = 0; e < curves[0].size(); ++e)
+    EXPECT_NEAR(curves[1][e], curves[0][e], 1e-5 * curves[0][e]) << "epoch " << e;
+}
+
 TEST(AutoencoderTrainer, EmptyShardsAreSkippedExactly) {
   // With minibatches of one image the second worker's shard is empty, so 2 threads compute
   // exactly what 1 thread does.

@@ -34,13 +34,8 @@ TEST(AutoencoderNoAllocation, CounterSeesAllocationsOnWorkerThreads) {
             4);  // operator new and Eigen's aligned malloc, per worker
 }
 
-TEST(AutoencoderNoAllocation, DataParallelStepAfterWarmUp) {
-  if (!testing::kAllocationCounting) GTEST_SKIP() << "allocation counting is off under sanitizers";
-  AutoencoderArchitecture a;
-  a.image_size = 8;
-  a.strides = {2, 1};
-  a.filters = {4, 4};
-  a.latent_size = 3;
+// Data-parallel steps of the model with this architecture allocate nothing once warmed up.
+void expect_no_allocation_after_warm_up(const AutoencoderArchitecture& a) {
   nn::Rng init(1);
   ConvAutoencoder<float> model(a, init);
   nn::Mat<float> data = nn::Mat<float>::Random(12, model.image_values()).cwiseAbs();
@@ -57,6 +52,27 @@ TEST(AutoencoderNoAllocation, DataParallelStepAfterWarmUp) {
   }
   testing::g_counting_allocations = false;
   EXPECT_EQ(testing::g_allocations.load(), 0);
+}
+
+TEST(AutoencoderNoAllocation, DataParallelStepAfterWarmUp) {
+  if (!testing::kAllocationCounting) GTEST_SKIP() << "allocation counting is off under sanitizers";
+  AutoencoderArchitecture a;
+  a.image_size = 8;
+  a.strides = {2, 1};
+  a.filters = {4, 4};
+  a.latent_size = 3;
+  expect_no_allocation_after_warm_up(a);
+}
+
+// With 16 channels the stride-2 layers run nn/winograd_stride2_conv3x3.hpp.
+TEST(AutoencoderNoAllocation, DataParallelStepAfterWarmUpWithStride2Winograd) {
+  if (!testing::kAllocationCounting) GTEST_SKIP() << "allocation counting is off under sanitizers";
+  AutoencoderArchitecture a;
+  a.image_size = 8;
+  a.strides = {2, 2};
+  a.filters = {16, 16};
+  a.latent_size = 3;
+  expect_no_allocation_after_warm_up(a);
 }
 
 }  // namespace
