@@ -207,27 +207,27 @@ void WinogradStride2Conv3x3<S>::terms_to_full(Index count, S* images, Index stri
 }
 
 template <class S>
-void WinogradStride2Conv3x3<S>::multiply_forward(Index columns) {
-  const Index C = full_channels_, O = half_channels_;
-  const Index v_terms = term_stride(C, columns), m_terms = term_stride(O, columns);
-  const Index u_terms = term_stride(O, C);
-  m_.resize(kTerms, m_terms);
+void WinogradStride2Conv3x3<S>::multiply(Buffer<S>& in, Index in_channels, const S* weights,
+                                         Buffer<S>& out, Index out_channels, Index columns) {
+  const Index in_terms = term_stride(in_channels, columns);
+  const Index out_terms = term_stride(out_channels, columns);
+  const Index weight_terms = term_stride(in_channels, out_channels);
+  out.resize(kTerms, out_terms);
   for (int xi = 0; xi < kTerms; ++xi)
-    gemm<S>(ConstMatMap<S>(v_.view().data() + xi * v_terms, columns, C), Op::kPlain,
-            ConstMatMap<S>(ut_data_ + weight_term(xi) * u_terms, C, O), Op::kPlain,
-            MatMap<S>(m_.view().data() + xi * m_terms, columns, O), /*accumulate=*/false, scratch_);
+    gemm<S>(ConstMatMap<S>(in.view().data() + xi * in_terms, columns, in_channels), Op::kPlain,
+            ConstMatMap<S>(weights + weight_term(xi) * weight_terms, in_channels, out_channels),
+            Op::kPlain, MatMap<S>(out.view().data() + xi * out_terms, columns, out_channels),
+            /*accumulate=*/false, scratch_);
+}
+
+template <class S>
+void WinogradStride2Conv3x3<S>::multiply_forward(Index columns) {
+  multiply(v_, full_channels_, ut_data_, m_, half_channels_, columns);
 }
 
 template <class S>
 void WinogradStride2Conv3x3<S>::multiply_adjoint(Index columns) {
-  const Index C = full_channels_, O = half_channels_;
-  const Index v_terms = term_stride(C, columns), m_terms = term_stride(O, columns);
-  const Index u_terms = term_stride(O, C);
-  v_.resize(kTerms, v_terms);
-  for (int xi = 0; xi < kTerms; ++xi)
-    gemm<S>(ConstMatMap<S>(m_.view().data() + xi * m_terms, columns, O), Op::kPlain,
-            ConstMatMap<S>(u_data_ + weight_term(xi) * u_terms, O, C), Op::kPlain,
-            MatMap<S>(v_.view().data() + xi * v_terms, columns, C), /*accumulate=*/false, scratch_);
+  multiply(m_, half_channels_, u_data_, v_, full_channels_, columns);
 }
 
 template <class S>

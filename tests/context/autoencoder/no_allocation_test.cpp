@@ -12,6 +12,8 @@
 #include <cstddef>
 #include <cstdlib>
 #include <numeric>
+#include <utility>
+#include <vector>
 
 #include "context/autoencoder/data_parallel_trainer.hpp"
 
@@ -34,8 +36,14 @@ TEST(AutoencoderNoAllocation, CounterSeesAllocationsOnWorkerThreads) {
             4);  // operator new and Eigen's aligned malloc, per worker
 }
 
-// Data-parallel steps of the model with this architecture allocate nothing once warmed up.
-void expect_no_allocation_after_warm_up(const AutoencoderArchitecture& a) {
+// Data-parallel steps of an autoencoder of 8x8 images with these strides and filters allocate
+// nothing once warmed up.
+void expect_no_allocation_after_warm_up(std::vector<int> strides, std::vector<int> filters) {
+  AutoencoderArchitecture a;
+  a.image_size = 8;
+  a.strides = std::move(strides);
+  a.filters = std::move(filters);
+  a.latent_size = 3;
   nn::Rng init(1);
   ConvAutoencoder<float> model(a, init);
   nn::Mat<float> data = nn::Mat<float>::Random(12, model.image_values()).cwiseAbs();
@@ -56,23 +64,13 @@ void expect_no_allocation_after_warm_up(const AutoencoderArchitecture& a) {
 
 TEST(AutoencoderNoAllocation, DataParallelStepAfterWarmUp) {
   if (!testing::kAllocationCounting) GTEST_SKIP() << "allocation counting is off under sanitizers";
-  AutoencoderArchitecture a;
-  a.image_size = 8;
-  a.strides = {2, 1};
-  a.filters = {4, 4};
-  a.latent_size = 3;
-  expect_no_allocation_after_warm_up(a);
+  expect_no_allocation_after_warm_up({2, 1}, {4, 4});
 }
 
 // With 16 channels the stride-2 layers run nn/winograd_stride2_conv3x3.hpp.
 TEST(AutoencoderNoAllocation, DataParallelStepAfterWarmUpWithStride2Winograd) {
   if (!testing::kAllocationCounting) GTEST_SKIP() << "allocation counting is off under sanitizers";
-  AutoencoderArchitecture a;
-  a.image_size = 8;
-  a.strides = {2, 2};
-  a.filters = {16, 16};
-  a.latent_size = 3;
-  expect_no_allocation_after_warm_up(a);
+  expect_no_allocation_after_warm_up({2, 2}, {16, 16});
 }
 
 }  // namespace
