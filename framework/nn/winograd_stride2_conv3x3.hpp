@@ -111,12 +111,12 @@ class WinogradStride2Conv3x3 {
   // The sum of B9 dV B9^T from v_ into `count` full-resolution images, likewise.
   void terms_to_full(Index count, S* images, Index stride, const S* bias, bool relu, const S* keep,
                      Index keep_stride);
-  // For every term: m_ = v_ U^T (forward) or v_ = m_ U (adjoint), on `columns` tiles.
-  void multiply_forward(Index columns);
   // For every term xi: out_xi (columns x out_channels) = in_xi (columns x in_channels) times
   // weight term weight_term(xi) of `weights` (in_channels x out_channels each).
   void multiply(Buffer<S>& in, Index in_channels, const S* weights, Buffer<S>& out,
                 Index out_channels, Index columns);
+  // For every term: m_ = v_ U^T (forward) or v_ = m_ U (adjoint), on `columns` tiles.
+  void multiply_forward(Index columns);
   void multiply_adjoint(Index columns);
   // dU^T (+)= V dM^T summed over the chunk's tiles, per weight term.
   void accumulate_weight_terms(Index columns, bool first_chunk);
