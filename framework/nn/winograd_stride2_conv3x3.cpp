@@ -7,7 +7,6 @@
 #include "nn/winograd_stride2_conv3x3.hpp"
 
 #include <algorithm>
-#include <limits>
 #include <stdexcept>
 
 #include "nn/gemm.hpp"
@@ -23,8 +22,9 @@ using namespace stride2;  // the 1-D maps
 namespace {
 
 // Tiles per chunk (whole images, at least one): the products of a chunk's terms have this many
-// rows, and its 81 term matrices stay in the core's L2 cache (with 64 channels, 81 x 64 x 32
-// floats, 660 KB). Chunks of 8 to 64 tiles gave the same training speed within 2% (Zen 4).
+// rows, and the 81 term matrices of one side of a chunk fit in the core's L2 cache (with 64
+// channels, 81 x 64 x 32 floats, 660 KB). Chunks of 16 to 48 tiles trained at the same speed
+// within 2% (Zen 4); 4-tile chunks left the products 4 rows, at half the speed.
 constexpr Index kChunkTiles = 32;
 // Gap between the 81 term matrices of a chunk: the transforms write (or read) all 81 at the same
 // offset, and matrices a power of two apart would fall into the same cache sets.
