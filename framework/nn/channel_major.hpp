@@ -36,4 +36,13 @@ void scatter_channel_major(const S* M, Index count, Index channels, Index pixels
     }
 }
 
+/// sums[c] += the sum of channel c (`pixels` values) over every image (row) of `images`: the
+/// bias gradient of a convolution, images being dL/dy.
+template <class S>
+void add_channel_sums(ConstMatRef<S> images, Index channels, Index pixels, S* sums) {
+  for (Index n = 0; n < images.rows(); ++n)
+    for (Index c = 0; c < channels; ++c)
+      sums[c] += ConstMatMap<S>(images.row(n).data() + c * pixels, 1, pixels).sum();
+}
+
 }  // namespace corrmp::nn

@@ -15,6 +15,7 @@
 #include <limits>
 #include <stdexcept>
 
+#include "nn/channel_major.hpp"
 #include "nn/gemm.hpp"
 #include "nn/row_phases.hpp"
 
@@ -369,10 +370,7 @@ void WinogradConv3x3<S>::backward(const S* weight, ConstMatRef<S> x, ConstMatRef
                                   bool relu_input) {
   const Index batch = x.rows(), chunk = chunk_images(batch);
   const Index tiles = tile_rows_ * tile_cols_, cin = in_channels_, cout = out_channels_;
-  for (Index n = 0; n < batch; ++n)
-    for (Index o = 0; o < cout; ++o)
-      bias_grad[o] +=
-          ConstMatMap<S>(dy.row(n).data() + o * height_ * width_, 1, height_ * width_).sum();
+  add_channel_sums(dy, cout, height_ * width_, bias_grad);
   if (batch == 0) return;
   transform_weights(weight);
   MatMap<S> du = du_.resize(kTerms, term_stride(cout, cin));  // the first chunk writes it

@@ -9,6 +9,7 @@
 #include <algorithm>
 #include <stdexcept>
 
+#include "nn/channel_major.hpp"
 #include "nn/gemm.hpp"
 #include "nn/pixel_major.hpp"
 #include "nn/relu_fusion.hpp"
@@ -285,11 +286,7 @@ void WinogradStride2Conv3x3<S>::convolve_backward(const S* weight, ConstMatRef<S
                                                   S* bias_grad, S* full_grad,
                                                   Index full_grad_stride, bool relu_input) {
   const Index batch = full.rows(), chunk = chunk_images(batch), tiles = tile_rows_ * tile_cols_;
-  const Index half_pixels = half_height_ * half_width_;
-  for (Index n = 0; n < batch; ++n)
-    for (Index o = 0; o < half_channels_; ++o)
-      bias_grad[o] +=
-          ConstMatMap<S>(half_grad.row(n).data() + o * half_pixels, 1, half_pixels).sum();
+  add_channel_sums(half_grad, half_channels_, half_height_ * half_width_, bias_grad);
   if (batch == 0) return;
   transform_weights(weight);
   for (Index first = 0; first < batch; first += chunk) {
@@ -326,11 +323,7 @@ void WinogradStride2Conv3x3<S>::convolve_transposed_backward(const S* weight, Co
                                                              S* half_grad, Index half_grad_stride,
                                                              bool relu_input) {
   const Index batch = half.rows(), chunk = chunk_images(batch), tiles = tile_rows_ * tile_cols_;
-  const Index full_pixels = height_ * width_;
-  for (Index n = 0; n < batch; ++n)
-    for (Index c = 0; c < full_channels_; ++c)
-      bias_grad[c] +=
-          ConstMatMap<S>(full_grad.row(n).data() + c * full_pixels, 1, full_pixels).sum();
+  add_channel_sums(full_grad, full_channels_, height_ * width_, bias_grad);
   if (batch == 0) return;
   transform_weights(weight);
   for (Index first = 0; first < batch; first += chunk) {
