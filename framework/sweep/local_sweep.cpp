@@ -6,6 +6,7 @@
 #include <spdlog/spdlog.h>
 #include <sys/file.h>
 #include <sys/prctl.h>
+#include <sys/stat.h>
 #include <sys/wait.h>
 #include <unistd.h>
 
@@ -15,6 +16,7 @@
 #include <cstring>
 #include <filesystem>
 #include <map>
+#include <optional>
 #include <stdexcept>
 #include <thread>
 
@@ -30,25 +32,44 @@ namespace fs = std::filesystem;
 
 namespace {
 
-// Held while this process drives the sweep; the kernel releases it when the
-// process ends, however it ends.
+// Held while this process drives the sweep; the kernel releases it when the process ends,
+// however it ends, and the file is removed when the driver finishes (a killed driver leaves
+// it, harmlessly: the next driver takes it).
 class SweepLock {
  public:
-  explicit SweepLock(const fs::path& path) {
-    fd_ = ::open(path.c_str(), O_RDWR | O_CREAT | O_CLOEXEC, 0644);
-    if (fd_ < 0) throw std::runtime_error(fmt::format("cannot open {}", path.string()));
-    if (::flock(fd_, LOCK_EX | LOCK_NB) != 0) {
+  explicit SweepLock(const fs::path& path) : path_(path) {
+    for (;;) {
+      fd_ = ::open(path.c_str(), O_RDWR | O_CREAT | O_CLOEXEC, 0644);
+      if (fd_ < 0) {
+        throw std::runtime_error(fmt::format("cannot create the sweep's lock file {}: {}",
+                                             path.string(), std::strerror(errno)));
+      }
+      if (::flock(fd_, LOCK_EX | LOCK_NB) != 0) {
+        ::close(fd_);
+        throw std::runtime_error(fmt::format(
+            "another process is running this sweep (it holds {}); wait for it or stop it",
+            path.string()));
+      }
+      // A driver that finished removes the file: the lock is ours only if the path still
+      // names the file we locked.
+      struct stat locked {
+      }, named{};
+      if (::fstat(fd_, &locked) == 0 && ::stat(path.c_str(), &named) == 0 &&
+          locked.st_dev == named.st_dev && locked.st_ino == named.st_ino) {
+        return;
+      }
       ::close(fd_);
-      throw std::runtime_error(
-          fmt::format("another process is running this sweep (it holds {}); wait for it or stop it",
-                      path.string()));
     }
   }
-  ~SweepLock() { ::close(fd_); }
+  ~SweepLock() {
+    ::unlink(path_.c_str());  // while locked, so no other driver holds this file
+    ::close(fd_);
+  }
   SweepLock(const SweepLock&) = delete;
   SweepLock& operator=(const SweepLock&) = delete;
 
  private:
+  fs::path path_;
   int fd_ = -1;
 };
 
@@ -100,16 +121,18 @@ SweepOutcome run_sweep_locally(const Sweep& sweep, const LocalSweepOptions& opti
   SweepOutcome outcome;
   const fs::path dir = fs::path(options.out_dir) / "sweeps" / sweep.id;
   outcome.directory = dir.string();
-  fs::create_directories(dir);
-  // Beside the database: two drivers of one sweep into one database are
-  // refused whatever their --out.
-  SweepLock lock(options.db_path + ".sweep-" + sweep.id + ".lock");
   const fs::path manifest = dir / "manifest.yaml";
-  write_manifest(manifest.string(), sweep);
-
+  std::optional<SweepLock> lock;
   std::vector<int> pending;
   {
+    // The database first: one that cannot be used is refused (StoreError) before anything
+    // is written, and opening it makes the folder the lock goes in.
     ResultStore store(options.db_path);
+    // Beside the database: two drivers of one sweep into one database are refused whatever
+    // their --out.
+    lock.emplace(options.db_path + ".sweep-" + sweep.id + ".lock");
+    fs::create_directories(dir);
+    write_manifest(manifest.string(), sweep);
     store.mark_interrupted_runs();
     record_sweep(store, sweep);
     const auto done = completed_jobs(store, sweep.id);
@@ -195,9 +218,7 @@ SweepOutcome run_sweep_locally(const Sweep& sweep, const LocalSweepOptions& opti
   } else if (outcome.completed + outcome.failed + outcome.interrupted != last_logged) {
     spdlog::info("{}", line);
   }
-  if (stopping) {
-    outcome.interrupted += static_cast<int>(pending.size() - next);
-  }
+  outcome.not_started = static_cast<int>(pending.size() - next);
   return outcome;
 }
 

@@ -25,13 +25,15 @@ struct SweepOutcome {
   int completed = 0;
   int failed = 0;
   int interrupted = 0;
+  int not_started = 0;    // pending jobs a Ctrl-C stopped before they started
   std::string directory;  // <out>/sweeps/<id>: manifest, job logs
 };
 
-// Runs the sweep's pending jobs. A second driver of the same sweep is refused
-// (a lock file beside the database). Ctrl-C stops the running jobs (they
-// mark their runs interrupted); a driver killed outright takes its jobs with
-// it (they are killed when their parent dies), and --resume reruns them.
+// Runs the sweep's pending jobs. A database that cannot be used is refused
+// (StoreError) before anything is written; a second driver of the same sweep
+// is refused (a lock file beside the database, removed when the driver ends). Ctrl-C stops the
+// running jobs (they mark their runs interrupted); a driver killed outright takes its jobs with it
+// (they are killed when their parent dies), and --resume reruns them.
 SweepOutcome run_sweep_locally(const Sweep& sweep, const LocalSweepOptions& options);
 
 }  // namespace corrmp

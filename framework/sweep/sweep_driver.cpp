@@ -122,13 +122,16 @@ int drive_sweep(const Sweep& sweep, const SweepDriverOptions& options) {
   local.threads_per_job = std::max(1, options.threads / local.parallel_jobs);
   const SweepOutcome outcome = run_sweep_locally(sweep, local);
   fmt::print(
-      "sweep {}: {} completed, {} failed, {} interrupted ({} completed before); "
+      "sweep {}: {} completed, {} failed, {} interrupted{} ({} completed before); "
       "runs in {} (report --sweep {}), logs in {}\n",
-      sweep.id, outcome.completed, outcome.failed, outcome.interrupted, outcome.skipped,
-      options.run.db_path, sweep.id, outcome.directory);
-  if (outcome.interrupted > 0) {
-    fmt::print("resume with: run_experiment --resume {} --db {} --out {}\n", sweep.id,
-               options.run.db_path, options.run.out_dir);
+      sweep.id, outcome.completed, outcome.failed, outcome.interrupted,
+      outcome.not_started > 0 ? fmt::format(", {} not started", outcome.not_started) : "",
+      outcome.skipped, options.run.db_path, sweep.id, outcome.directory);
+  if (outcome.interrupted > 0 || outcome.not_started > 0) {
+    fmt::print("resume with: run_experiment --resume {} --db {} --out {}{}{}\n", sweep.id,
+               options.run.db_path, options.run.out_dir,
+               local.parallel_jobs > 1 ? fmt::format(" -j {}", local.parallel_jobs) : "",
+               local.use_cache ? "" : " --no-cache");
     return 130;
   }
   return outcome.failed > 0 ? 1 : 0;

@@ -3,6 +3,7 @@
 // killed with kill -9 resumed to exactly one completed run per job, and a
 // Slurm round trip through a real single-node Slurm (skipped where Slurm
 // cannot start).
+#include <fcntl.h>
 #include <gtest/gtest.h>
 #include <signal.h>
 #include <sys/wait.h>
@@ -41,13 +42,22 @@ std::string read_text(const std::filesystem::path& path) {
   return text.str();
 }
 
-Outcome run(const TempDir& dir, const std::string& args) {
+Outcome run(const TempDir& dir, const std::string& args, const std::string& db = "") {
   const std::string log = dir.file("output.txt");
   const std::string command = std::string(RUN_EXPERIMENT_BIN) + " " + args + " --db " +
-                              dir.file("r.sqlite") + " --out " + dir.file("runs") + " >" + log +
-                              " 2>&1";
+                              (db.empty() ? dir.file("r.sqlite") : db) + " --out " +
+                              dir.file("runs") + " >" + log + " 2>&1";
   const int status = std::system(command.c_str());
   return {WIFEXITED(status) ? WEXITSTATUS(status) : -1, read_text(log)};
+}
+
+// The files under `folder` whose names contain `part`.
+int files_named(const std::filesystem::path& folder, const std::string& part) {
+  int count = 0;
+  for (const auto& entry : std::filesystem::recursive_directory_iterator(folder)) {
+    if (entry.path().filename().string().find(part) != std::string::npos) ++count;
+  }
+  return count;
 }
 
 TEST(SweepCommand, BadAxesExitTwoWithOneLineAndWriteNothing) {
@@ -105,6 +115,69 @@ TEST(SweepCommand, ResumeAndMergeRefuseMissingDatabasesWritingNothing) {
                             " 2> /dev/null";
   EXPECT_EQ(WEXITSTATUS(std::system(merge.c_str())), 2);
   EXPECT_FALSE(std::filesystem::exists(dir.file("r.sqlite")));
+}
+
+TEST(SweepCommand, AnUnusableDatabaseIsRefusedBeforeAnythingIsWritten) {
+  TempDir dir;
+  const std::string config = dir.write("tiny.yaml", kTiny);
+  dir.write("r.sqlite", "garbage\n");
+  const Outcome outcome = run(dir, config + " -m seed=0,1");
+  EXPECT_EQ(outcome.exit_code, 2) << outcome.out;
+  EXPECT_NE(outcome.out.find("r.sqlite"), std::string::npos) << outcome.out;
+  EXPECT_EQ(std::count(outcome.out.begin(), outcome.out.end(), '\n'), 1) << outcome.out;
+  EXPECT_EQ(read_text(dir.file("r.sqlite")), "garbage\n");
+  EXPECT_FALSE(std::filesystem::exists(dir.file("runs")));  // no manifest, no sweep folder
+  EXPECT_EQ(files_named(dir.path(), ".lock"), 0);
+}
+
+TEST(SweepCommand, MakesTheDatabaseFolderAndRemovesItsLockWhenDone) {
+  TempDir dir;
+  const std::string config = dir.write("tiny.yaml", kTiny);
+  const std::string db = dir.file("new/folder/r.sqlite");
+  const Outcome outcome = run(dir, config + " -m seed=0,1", db);
+  ASSERT_EQ(outcome.exit_code, 0) << outcome.out;
+  ResultStore store(db);
+  EXPECT_EQ(store.query_int("SELECT count(*) FROM runs WHERE status = 'completed'"), 2);
+  EXPECT_EQ(files_named(dir.file("new/folder"), ".lock"), 0);
+}
+
+TEST(SweepCommand, CtrlCStopsTheJobsAndCountsTheOnesNeverStarted) {
+  TempDir dir;
+  std::string slow = kTiny;
+  slow.replace(slow.find("updates: 200"), 12, "updates: 100000");
+  const std::string config = dir.write("tiny.yaml", slow);
+  const std::string log = dir.file("driver.txt");
+  const pid_t driver = ::fork();
+  if (driver == 0) {
+    const int out = ::open(log.c_str(), O_WRONLY | O_CREAT | O_TRUNC, 0644);
+    ::dup2(out, STDOUT_FILENO);
+    ::dup2(out, STDERR_FILENO);
+    const std::string db = dir.file("r.sqlite"), runs = dir.file("runs");
+    ::execl(RUN_EXPERIMENT_BIN, RUN_EXPERIMENT_BIN, config.c_str(), "-m", "seed=range(0,5)", "-j",
+            "2", "--db", db.c_str(), "--out", runs.c_str(), static_cast<char*>(nullptr));
+    ::_exit(127);
+  }
+  // Both first jobs under way, then Ctrl-C.
+  const auto deadline = std::chrono::steady_clock::now() + std::chrono::seconds(60);
+  int64_t running = 0;
+  while (running < 2 && std::chrono::steady_clock::now() < deadline) {
+    running = testing::wait_until_positive(dir.file("r.sqlite"),
+                                           "SELECT count(*) FROM runs WHERE status = 'running'");
+    if (running < 2) std::this_thread::sleep_for(std::chrono::milliseconds(100));
+  }
+  ASSERT_EQ(running, 2);
+  ::kill(driver, SIGINT);
+  int status = 0;
+  ::waitpid(driver, &status, 0);
+  const std::string out = read_text(log);
+  EXPECT_EQ(WIFEXITED(status) ? WEXITSTATUS(status) : -1, 130) << out;
+  EXPECT_NE(out.find("0 completed, 0 failed, 2 interrupted, 3 not started"), std::string::npos)
+      << out;
+  EXPECT_NE(out.find("resume with: run_experiment --resume "), std::string::npos) << out;
+  EXPECT_NE(out.find(" -j 2\n"), std::string::npos) << out;
+  ResultStore store(dir.file("r.sqlite"));
+  EXPECT_EQ(store.query_int("SELECT count(*) FROM runs"), 2);
+  EXPECT_EQ(store.query_int("SELECT count(*) FROM runs WHERE status = 'interrupted'"), 2);
 }
 
 TEST(SweepCommand, AKilledSweepResumesToExactlyOneCompletedRunPerJob) {
