@@ -7,6 +7,8 @@
 #include <utility>
 #include <vector>
 
+#include "core/config/config_error.hpp"
+
 namespace corrmp {
 
 // What each job asks of a cluster scheduler (Slurm): from the sweep file's
@@ -29,11 +31,20 @@ struct SweepJob {
   std::vector<std::pair<std::string, std::string>> axes;
 };
 
+// Where a sweep file set a config key (an axis or a fixed override), so that an error in
+// its value names that place rather than the command line.
+struct SweepKeyOrigin {
+  std::string key;       // the config key path it sets, e.g. policy.training.updates
+  SourceLocation where;  // its place in the sweep file
+  std::string path;      // the sweep file's own path to it, e.g. sweep.axes.policy.training.updates
+};
+
 struct Sweep {
   std::string id;    // unique: <name>-<UTC time>-<random hex>
   std::string name;  // the sweep file's name, or the base config's experiment
   std::vector<SweepJob> jobs;
   SlurmResources slurm;
+  std::vector<SweepKeyOrigin> key_origins;  // a sweep file's; not kept in the manifest
 };
 
 }  // namespace corrmp

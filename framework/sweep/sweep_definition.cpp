@@ -140,14 +140,27 @@ Sweep define_sweep(const std::string& config_path, const std::vector<std::string
       throw ConfigError(section.find("configs")->where(), "sweep.configs", "no config to run");
     }
     fixed = read.overrides;
+    if (const ConfigNode* overrides = section.find("overrides")) {
+      std::size_t i = 0;
+      for (const auto& item : overrides->items()) {
+        const std::string& text = read.overrides.at(i++);
+        const std::string key = text.substr(0, text.find('='));
+        sweep.key_origins.push_back({key, item.where(), "sweep.overrides: " + key});
+      }
+    }
     check_name(read.name, section.find("name")->where());
     sweep.name = read.name;
     sweep.slurm = slurm.resources;
     if (const ConfigNode* axes = section.find("axes")) {
-      for (auto& axis : read_axes(*axes, "sweep.axes")) groups.push_back({std::move(axis)});
+      for (auto& axis : read_axes(*axes, "sweep.axes")) {
+        sweep.key_origins.push_back({axis.key, axis.where, "sweep.axes." + axis.key});
+        groups.push_back({std::move(axis)});
+      }
     }
     if (const ConfigNode* zip = section.find("zip")) {
       AxisGroup group = read_axes(*zip, "sweep.zip");
+      for (const auto& axis : group)
+        sweep.key_origins.push_back({axis.key, axis.where, "sweep.zip." + axis.key});
       if (!group.empty()) groups.push_back(std::move(group));
     }
   } else {

@@ -9,6 +9,7 @@
 #include <fstream>
 
 #include "core/config/config_error.hpp"
+#include "core/config/config_loader.hpp"
 #include "experiment/experiment.hpp"
 #include "store/store_merge.hpp"
 #include "sweep/local_sweep.hpp"
@@ -26,6 +27,18 @@ std::string describe_axes(const SweepJob& job) {
   std::string text;
   for (const auto& [key, value] : job.axes) text += (text.empty() ? "" : " ") + key + "=" + value;
   return text.empty() ? job.config_path : text;
+}
+
+// The sweep-file place of the override an error is about: the override's own key or one
+// inside its value. Only for errors located at an override, so a base config's own mistakes
+// keep their place.
+const SweepKeyOrigin* sweep_file_origin(const Sweep& sweep, const ConfigError& error) {
+  if (!is_override_location(error.where())) return nullptr;
+  const std::string& path = error.key_path();
+  for (const SweepKeyOrigin& origin : sweep.key_origins) {
+    if (path == origin.key || path.rfind(origin.key + ".", 0) == 0) return &origin;
+  }
+  return nullptr;
 }
 
 // Writes the manifest, the array script and the folders its tasks write to.
@@ -103,8 +116,11 @@ void check_sweep_jobs(const Sweep& sweep, const Registries& registries) {
     try {
       load_experiment(job.config_path, job.overrides, registries);
     } catch (const ConfigError& e) {
-      throw ConfigError(
-          fmt::format("{} (sweep job {}: {})", e.what(), job.index, describe_axes(job)));
+      const std::string context = fmt::format(" (sweep job {}: {})", job.index, describe_axes(job));
+      if (const SweepKeyOrigin* origin = sweep_file_origin(sweep, e)) {
+        throw ConfigError(origin->where, origin->path, e.reason() + context);
+      }
+      throw ConfigError(e.what() + context);
     }
   }
 }

@@ -81,6 +81,36 @@ TEST(SweepCommand, BadAxesExitTwoWithOneLineAndWriteNothing) {
   }
 }
 
+// A sweep file's axis or override with a bad key or value is reported at its place in the
+// file, not as a command-line override.
+TEST(SweepCommand, BadValuesOfASweepFileNameTheirPlaceInTheFile) {
+  TempDir dir;
+  dir.write("tiny.yaml", kTiny);
+  const std::string head = "sweep:\n  name: bad\n  configs: [tiny.yaml]\n";
+  const std::vector<std::pair<std::string, std::string>> cases = {
+      {"  axes:\n    policy.training.updatez: [100, 200]\n",
+       "bad.yaml:5:30: sweep.axes.policy.training.updatez: unknown key (did you mean 'updates'?)"},
+      {"  overrides: [seed=1, policy.network.widht=4]\n",
+       "bad.yaml:4:23: sweep.overrides: policy.network.widht: unknown key (did you mean 'width'?)"},
+      {"  zip:\n    seed: [1, 2]\n    policy.training.updates: [100, -5]\n",
+       "bad.yaml:6:30: sweep.zip.policy.training.updates: value -5 is out of range"},
+  };
+  for (const auto& [section, expected] : cases) {
+    const std::string file = dir.write("bad.yaml", head + section);
+    const Outcome outcome = run(dir, file);
+    EXPECT_EQ(outcome.exit_code, 2) << section;
+    EXPECT_NE(outcome.out.find(expected), std::string::npos) << outcome.out;
+    EXPECT_EQ(outcome.out.find("command-line override"), std::string::npos) << outcome.out;
+    EXPECT_EQ(std::count(outcome.out.begin(), outcome.out.end(), '\n'), 1) << outcome.out;
+    EXPECT_FALSE(std::filesystem::exists(dir.file("r.sqlite"))) << section;
+  }
+  // The same key on the command line is the command line's.
+  const Outcome command_line = run(dir, dir.file("tiny.yaml") + " -m policy.training.updatez=1,2");
+  EXPECT_NE(command_line.out.find("command-line override 'policy.training.updatez=1'"),
+            std::string::npos)
+      << command_line.out;
+}
+
 TEST(SweepCommand, RecordsEveryJobWithItsSweepAndAxes) {
   TempDir dir;
   const std::string config = dir.write("tiny.yaml", kTiny);

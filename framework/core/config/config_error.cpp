@@ -59,7 +59,10 @@ std::string compose(const SourceLocation& where, const std::string& key_path,
 
 ConfigError::ConfigError(const SourceLocation& where, const std::string& key_path,
                          const std::string& what)
-    : std::runtime_error(one_line(compose(where, key_path, what))) {}
+    : std::runtime_error(one_line(compose(where, key_path, what))),
+      where_(where),
+      key_path_(key_path),
+      reason_(what) {}
 
 ConfigError::ConfigError(const std::string& message) : std::runtime_error(one_line(message)) {}
 

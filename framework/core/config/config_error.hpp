@@ -24,6 +24,17 @@ class ConfigError : public std::runtime_error {
  public:
   ConfigError(const SourceLocation& where, const std::string& key_path, const std::string& what);
   explicit ConfigError(const std::string& message);
+
+  /// The parts of the message, for a caller that knows better where the value came from (a
+  /// sweep file's override, say); empty for an error made from a whole message.
+  const SourceLocation& where() const { return where_; }
+  const std::string& key_path() const { return key_path_; }
+  const std::string& reason() const { return reason_; }
+
+ private:
+  SourceLocation where_;
+  std::string key_path_;
+  std::string reason_;
 };
 
 }  // namespace corrmp

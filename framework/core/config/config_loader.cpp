@@ -144,8 +144,10 @@ std::size_t count_nodes(const ConfigNode& node) {
   return count;
 }
 
+constexpr const char* kOverridePlace = "command-line override '";
+
 void apply_override(ConfigNode& root, const std::string& assignment, ConfigBudget& budget) {
-  const SourceLocation where{"command-line override '" + shown_override(assignment) + "'", 0, 0};
+  const SourceLocation where{kOverridePlace + shown_override(assignment) + "'", 0, 0};
   if (assignment.size() > kMaxConfigFileBytes) {
     throw ConfigError(
         where, "",
@@ -212,6 +214,10 @@ ConfigNode load_config_file(const std::string& path) {
   ConfigBudget budget;
   std::vector<OpenFile> stack;
   return load_with_includes(fs::path(path), nullptr, stack, budget);
+}
+
+bool is_override_location(const SourceLocation& where) {
+  return where.line == 0 && where.file.rfind(kOverridePlace, 0) == 0;
 }
 
 void apply_override(ConfigNode& root, const std::string& assignment) {
