@@ -48,13 +48,12 @@ Examples:
 )";
 
 int merge_command(const std::vector<std::string>& shards, const std::string& db_path) {
-  for (const auto& shard : shards) {
-    if (!std::filesystem::is_regular_file(shard)) {
-      std::cerr << "run_experiment merge: '" << shard << "' is not a database file\n";
-      return 2;
-    }
+  try {
+    corrmp::merge_shards(shards, db_path);
+  } catch (const corrmp::StoreError& e) {
+    std::cerr << "run_experiment merge: " << e.what() << "\n";
+    return 2;
   }
-  corrmp::merge_shards(shards, db_path);
   return 0;
 }
 

@@ -32,10 +32,37 @@ class Attached {
 
 }  // namespace
 
-MergeCounts merge_shard(ResultStore& target, const std::string& shard) {
+void check_shard(const std::string& shard) {
   if (!std::filesystem::is_regular_file(shard)) {
     throw StoreError(fmt::format("{}: no such database file", shard));
   }
+  sqlite3* db = nullptr;
+  int code = sqlite3_open_v2(shard.c_str(), &db, SQLITE_OPEN_READONLY, nullptr);
+  bool has_runs = false;
+  if (code == SQLITE_OK) {
+    sqlite3_stmt* query = nullptr;
+    code = sqlite3_prepare_v2(
+        db, "SELECT count(*) FROM sqlite_master WHERE type = 'table' AND name = 'runs'", -1, &query,
+        nullptr);
+    if (code == SQLITE_OK && (code = sqlite3_step(query)) == SQLITE_ROW) {
+      has_runs = sqlite3_column_int(query, 0) > 0;
+      code = SQLITE_OK;
+    }
+    sqlite3_finalize(query);
+  }
+  sqlite3_close(db);
+  if (code != SQLITE_OK) {
+    throw StoreError(
+        fmt::format("{}: not a result database to merge ({})", shard, sqlite3_errstr(code)));
+  }
+  if (!has_runs) {
+    throw StoreError(
+        fmt::format("{}: not a result database to merge (it has no runs table)", shard));
+  }
+}
+
+MergeCounts merge_shard(ResultStore& target, const std::string& shard) {
+  check_shard(shard);
   // Opening it through the store checks its schema and brings it up to date.
   { ResultStore check(shard); }
   MergeCounts counts;

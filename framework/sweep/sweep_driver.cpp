@@ -99,6 +99,7 @@ int run_on_slurm(const Sweep& sweep, const SweepDriverOptions& options) {
 }  // namespace
 
 void merge_shards(const std::vector<std::string>& shards, const std::string& db_path) {
+  for (const auto& shard : shards) check_shard(shard);  // before the target is opened or made
   ResultStore target(db_path);
   for (const auto& shard : shards) {
     const MergeCounts counts = merge_shard(target, shard);

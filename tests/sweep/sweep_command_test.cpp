@@ -210,6 +210,33 @@ TEST(SweepCommand, CtrlCStopsTheJobsAndCountsTheOnesNeverStarted) {
   EXPECT_EQ(store.query_int("SELECT count(*) FROM runs WHERE status = 'interrupted'"), 2);
 }
 
+// merge checks every shard before it merges any or makes the target.
+TEST(SweepCommand, MergeRefusesABadShardBeforeMergingAny) {
+  TempDir dir;
+  const std::string config = dir.write("tiny.yaml", kTiny);
+  const std::string first = dir.file("job-0.sqlite"), second = dir.file("job-1.sqlite");
+  ASSERT_EQ(run(dir, config + " seed=1", first).exit_code, 0);
+  ASSERT_EQ(run(dir, config + " seed=2", second).exit_code, 0);
+  const std::string bad = dir.write("x.yaml", "a: b\n");
+  const std::string target = dir.file("merged.sqlite");
+  const auto merge = [&](const std::string& shards) {
+    const std::string log = dir.file("merge.txt");
+    const std::string command = std::string(RUN_EXPERIMENT_BIN) + " merge " + shards + " --db " +
+                                target + " >" + log + " 2>&1";
+    const int status = std::system(command.c_str());
+    return Outcome{WIFEXITED(status) ? WEXITSTATUS(status) : -1, read_text(log)};
+  };
+  const Outcome refused = merge(first + " " + bad + " " + second);
+  EXPECT_EQ(refused.exit_code, 2);
+  EXPECT_EQ(refused.out, "run_experiment merge: " + bad +
+                             ": not a result database to merge (file is not a database)\n");
+  EXPECT_FALSE(std::filesystem::exists(target));
+  const Outcome merged = merge(first + " " + second);
+  ASSERT_EQ(merged.exit_code, 0) << merged.out;
+  ResultStore store(target);
+  EXPECT_EQ(store.query_int("SELECT count(*) FROM runs WHERE status = 'completed'"), 2);
+}
+
 TEST(SweepCommand, AKilledSweepResumesToExactlyOneCompletedRunPerJob) {
   TempDir dir;
   std::string slow = kTiny;
