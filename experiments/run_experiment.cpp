@@ -25,6 +25,7 @@
 #include "experiment/pipeline.hpp"
 #include "experiment/registries.hpp"
 #include "store/result_store.hpp"
+#include "sweep/sweep_axes.hpp"
 #include "sweep/sweep_definition.hpp"
 #include "sweep/sweep_driver.hpp"
 #include "sweep/sweep_manifest.hpp"
@@ -55,6 +56,24 @@ int merge_command(const std::vector<std::string>& shards, const std::string& db_
     return 2;
   }
   return 0;
+}
+
+// load_experiment for a run without -m: an override that looks like a sweep axis (a,b,
+// range(), choice()) and fails says that -m makes it one.
+corrmp::Experiment load_single_run(const std::string& config_path,
+                                   const std::vector<std::string>& overrides,
+                                   const corrmp::Registries& registries) {
+  try {
+    return corrmp::load_experiment(config_path, overrides, registries);
+  } catch (const corrmp::ConfigError& e) {
+    for (const auto& assignment : overrides) {
+      if (corrmp::is_sweep_assignment(assignment)) {
+        throw corrmp::ConfigError(std::string(e.what()) + " (to sweep over '" + assignment +
+                                  "', add -m)");
+      }
+    }
+    throw;
+  }
 }
 
 std::string this_executable() {
@@ -106,7 +125,8 @@ int main(int argc, char** argv) {
   app.add_option("-j,--jobs", sweep_options.parallel_jobs, "sweep jobs to run at once")
       ->check(CLI::Range(1, 256))
       ->capture_default_str();
-  app.add_option("--threads", threads, "threads of this run (of all jobs, for a sweep)")
+  app.add_option("--threads", threads,
+                 "threads of this run (of all jobs, for a sweep); default: all cores")
       ->check(CLI::Range(1, 1024))
       ->capture_default_str();
   app.add_option("--resume", resume, "run a sweep's jobs that have no completed run yet");
@@ -197,7 +217,7 @@ int main(int argc, char** argv) {
       sweep_options.executable = this_executable();
       return corrmp::drive_sweep(sweep, sweep_options);
     }
-    corrmp::Experiment experiment = corrmp::load_experiment(config_path, overrides, registries);
+    corrmp::Experiment experiment = load_single_run(config_path, overrides, registries);
     if (print_config) {
       std::cout << experiment.resolved_yaml;
       return 0;

@@ -47,14 +47,9 @@ std::string sbatch_file_pattern(const std::string& dir, const std::string& name)
   return quoted + name + "\"";
 }
 
-// A resource value written as is on an #SBATCH line: Slurm's time, memory and
-// partition syntax needs nothing else.
+// A resource value written as is on an #SBATCH line.
 const std::string& checked_resource(const std::string& value, const std::string& key) {
-  const bool plain = std::all_of(value.begin(), value.end(), [](char c) {
-    return std::isalnum(static_cast<unsigned char>(c)) ||
-           std::string(":-_.,+").find(c) != std::string::npos;
-  });
-  if (!plain) {
+  if (!is_slurm_value(value)) {
     throw std::invalid_argument("slurm." + key + ": '" + value +
                                 "' is not a Slurm value (letters, digits and :-_.,+ only)");
   }
@@ -96,6 +91,13 @@ std::vector<int> selected_indices(const Sweep& sweep, const SlurmArraySelection&
 }
 
 }  // namespace
+
+bool is_slurm_value(const std::string& value) {
+  return std::all_of(value.begin(), value.end(), [](char c) {
+    return std::isalnum(static_cast<unsigned char>(c)) ||
+           std::string(":-_.,+").find(c) != std::string::npos;
+  });
+}
 
 std::string slurm_array_spec(std::vector<int> indices, int max_concurrent) {
   if (indices.empty()) throw std::invalid_argument("a Slurm array needs at least one index");

@@ -11,6 +11,7 @@
 
 #include "core/config/config_loader.hpp"
 #include "core/config/config_reader.hpp"
+#include "sweep/slurm_launcher.hpp"
 #include "sweep/sweep_axes.hpp"
 
 namespace corrmp {
@@ -45,6 +46,22 @@ struct SweepSection {
     f("overrides", overrides, "key.path=value overrides applied to every job");
   }
 };
+
+// Resources an #SBATCH line cannot hold are refused where the file sets them, whether the
+// sweep then runs here or on Slurm.
+void check_slurm_values(const ConfigNode& section, const SlurmResources& resources) {
+  const std::pair<const char*, const std::string*> values[] = {{"time", &resources.time},
+                                                               {"memory", &resources.memory},
+                                                               {"partition", &resources.partition}};
+  for (const auto& [key, value] : values) {
+    const ConfigNode* node = section.find(key);
+    if (node != nullptr && !is_slurm_value(*value)) {
+      throw ConfigError(
+          node->where(), std::string("sweep.slurm.") + key,
+          fmt::format("'{}' is not a Slurm value (letters, digits and :-_.,+ only)", *value));
+    }
+  }
+}
 
 std::string axis_text(const ConfigNode& value, const std::string& path) {
   if (value.is_scalar()) return value.text();
@@ -128,6 +145,7 @@ Sweep define_sweep(const std::string& config_path, const std::vector<std::string
     SlurmSection slurm;
     if (ConfigNode* node = section.find("slurm")) {
       ConfigReader::read(*node, "sweep.slurm", slurm);
+      check_slurm_values(*node, slurm.resources);
     }
     reader.declare("slurm");
     reader.finish();

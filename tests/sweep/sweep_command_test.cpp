@@ -111,6 +111,20 @@ TEST(SweepCommand, BadValuesOfASweepFileNameTheirPlaceInTheFile) {
       << command_line.out;
 }
 
+TEST(SweepCommand, AnAxisWithoutMinusMSaysToAddIt) {
+  TempDir dir;
+  const std::string config = dir.write("tiny.yaml", kTiny);
+  const Outcome outcome = run(dir, config + " seed=1,2");
+  EXPECT_EQ(outcome.exit_code, 2);
+  EXPECT_NE(outcome.out.find("got '1,2' (to sweep over 'seed=1,2', add -m)\n"), std::string::npos)
+      << outcome.out;
+  EXPECT_FALSE(std::filesystem::exists(dir.file("r.sqlite")));
+  // Other bad overrides get no such hint.
+  const Outcome plain = run(dir, config + " seed=x");
+  EXPECT_EQ(plain.exit_code, 2);
+  EXPECT_EQ(plain.out.find("-m"), std::string::npos) << plain.out;
+}
+
 TEST(SweepCommand, RecordsEveryJobWithItsSweepAndAxes) {
   TempDir dir;
   const std::string config = dir.write("tiny.yaml", kTiny);
@@ -339,10 +353,18 @@ TEST(SweepCommand, RefusesSlurmResourcesAnSbatchLineCannotHoldWritingNothing) {
   dir.write("tiny.yaml", kTiny);
   const std::string sweep =
       dir.write("sweep.yaml", "sweep: {name: s, configs: [tiny.yaml], slurm: {time: '1 hour'}}\n");
+  const std::string expected =
+      "sweep.yaml:1:54: sweep.slurm.time: '1 hour' is not a Slurm value (letters, digits and "
+      ":-_.,+ only)\n";
   const Outcome outcome = run(dir, sweep + " --emit slurm " + dir.file("emit"));
   EXPECT_EQ(outcome.exit_code, 2) << outcome.out;
-  EXPECT_NE(outcome.out.find("slurm.time"), std::string::npos) << outcome.out;
+  EXPECT_NE(outcome.out.find(expected), std::string::npos) << outcome.out;
   EXPECT_FALSE(std::filesystem::exists(dir.file("emit")));
+  // The same sweep run here is refused too: the file is wrong wherever it runs.
+  const Outcome local = run(dir, sweep);
+  EXPECT_EQ(local.exit_code, 2) << local.out;
+  EXPECT_NE(local.out.find(expected), std::string::npos) << local.out;
+  EXPECT_FALSE(std::filesystem::exists(dir.file("r.sqlite")));
 }
 
 TEST(SweepCommand, EmitsTheSlurmFilesWithoutSubmitting) {
