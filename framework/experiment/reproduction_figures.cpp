@@ -397,8 +397,8 @@ void add_trajectory_comparison(FigureSet& set, const RunSummary& run, const RunF
   if (!view.execution_note.empty()) caption += "; " + view.execution_note;
   if (!absent.empty()) {
     std::string list;
-    for (const auto& label : absent) list += (list.empty() ? "" : ", ") + label;
-    caption += fmt::format(". No trial of this run expected: {}", list);
+    for (const auto& label : absent) list += (list.empty() ? "'" : ", '") + label + "'";
+    caption += fmt::format(". No trial of this run had the expected correction {}", list);
   }
   set.figures.push_back({relative_figure(name), caption + "."});
 }

@@ -204,7 +204,8 @@ TEST(ReproductionFigures, GroundTruthAgainstPredictionHasAColumnPerExpectedCorre
   EXPECT_TRUE(contains(caption, "corridor_pc run 1 (seed 0)")) << caption;
   EXPECT_TRUE(contains(caption, "push: trial 0, chose push, succeeded")) << caption;
   EXPECT_TRUE(contains(caption, "pull: trial 1, chose push, failed")) << caption;
-  EXPECT_TRUE(contains(caption, "No trial of this run expected: none.")) << caption;
+  EXPECT_TRUE(contains(caption, "No trial of this run had the expected correction 'none'."))
+      << caption;
   EXPECT_TRUE(contains(caption, "executed motion, is not drawn")) << caption;
   // Two columns (push, pull), two rows (the whole skill, the cor segment).
   EXPECT_EQ(
@@ -221,7 +222,8 @@ TEST(ReproductionFigures, OneExpectedCorrectionPutsItsTwoPanelsSideBySide) {
   add_trajectory_comparison(set, run_of(1, "corridor_pc", {{"seed", "0"}}, 1.0), files,
                             kCorridorView, dir.file("report"), "gt");
   ASSERT_EQ(set.figures.size(), 1u);
-  EXPECT_TRUE(contains(set.figures[0].caption, "No trial of this run expected: push, none."));
+  EXPECT_TRUE(contains(set.figures[0].caption,
+                       "No trial of this run had the expected correction 'push', 'none'."));
   EXPECT_EQ(
       png_size(dir.file("report/figures/gt.png")),
       cv::Size(2 * kTrajectoryComparisonPanel, kLineFigureHeader + kTrajectoryComparisonPanel));
