@@ -107,6 +107,7 @@ int main(int argc, char** argv) {
   app.footer(kExamples);
   if (const auto exit_code = corrmp::parse_command_line(app, argc, argv)) return *exit_code;
   query.completed_only = !all;
+  format.status_column = all;
   if (paper) format.paper_tables = std::string(CORRMP_SOURCE_DIR) + "/assets/paper/tables.yaml";
 
   if (compare && reproduction)
