@@ -164,6 +164,9 @@ int main(int argc, char** argv) {
     if (compare) {
       comparison.extra_metrics = format.extra_metrics;
       const auto result = corrmp::compare_runs(runs, comparison);
+      for (const auto& note : corrmp::pooling_notes(result)) {
+        std::cerr << "report: warning: " << note << " (averaged as if seeds)\n";
+      }
       if (out_dir.empty()) {
         std::cout << (csv ? corrmp::comparison_csv(result) : corrmp::comparison_markdown(result));
       } else {

@@ -405,12 +405,6 @@ void add_trajectory_comparison(FigureSet& set, const RunSummary& run, const RunF
 
 // ---- 2 -----------------------------------------------------------------------
 
-bool is_seed_key(const std::string& key) {
-  const std::string suffix = ".seed";
-  return key == "seed" || (key.size() > suffix.size() &&
-                           key.compare(key.size() - suffix.size(), suffix.size(), suffix) == 0);
-}
-
 std::vector<std::string> swept_numeric_axes(const std::vector<RunSummary>& runs) {
   std::map<std::string, std::set<std::string>> values;
   std::set<std::string> not_numeric;

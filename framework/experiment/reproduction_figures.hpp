@@ -87,10 +87,6 @@ void add_trajectory_comparison(FigureSet& set, const RunSummary& run, const RunF
 
 // ---- 2. Success against a swept parameter ------------------------------
 
-// Whether a setting key is a seed (seed, evaluation.seed, ...): seeds are
-// the replicates a mean is taken over, never a parameter.
-bool is_seed_key(const std::string& key);
-
 // The sweep axes, other than seeds, whose values are all numbers and take two
 // or more values across the runs; sorted.
 std::vector<std::string> swept_numeric_axes(const std::vector<RunSummary>& runs);

@@ -5,7 +5,9 @@
 
 #include <algorithm>
 #include <cmath>
+#include <set>
 
+#include "core/config/did_you_mean.hpp"
 #include "experiment/report_text.hpp"
 #include "stats/fisher_exact.hpp"
 
@@ -76,6 +78,77 @@ std::string pooled_short(const ProportionInterval& p) {
   return fmt::format("{} of {} ({:.1f}%)", p.successes, p.trials, 100 * p.rate);
 }
 
+// Every group_by key must be a setting of some run: a key none has would put
+// every run in one "(unset)" group. The error suggests a close key.
+void check_group_keys(const std::vector<RunSummary>& runs, const std::vector<std::string>& keys) {
+  for (const auto& key : keys) {
+    const bool found = std::any_of(runs.begin(), runs.end(), [&](const RunSummary& run) {
+      return run_setting(run, key).has_value();
+    });
+    if (found) continue;
+    std::set<std::string> known{"experiment"};
+    for (const auto& run : runs) {
+      for (const auto& entry : run.axes) known.insert(entry.first);
+      for (const auto& entry : run.settings) known.insert(entry.first);
+    }
+    std::vector<std::string> candidates(known.begin(), known.end());
+    std::string hint = did_you_mean(key, candidates);
+    if (hint.empty()) {  // "updates" for "policy.training.updates"
+      const auto suffix = std::find_if(candidates.begin(), candidates.end(), [&](const auto& c) {
+        return c.size() > key.size() && c.compare(c.size() - key.size(), key.size(), key) == 0 &&
+               c[c.size() - key.size() - 1] == '.';
+      });
+      if (suffix != candidates.end()) hint = " (did you mean '" + *suffix + "'?)";
+    }
+    throw ComparisonError(fmt::format("--by '{}': no selected run has this setting{}", key, hint));
+  }
+}
+
+// The keys, other than seeds and `excluded`, whose values differ between
+// `runs` (all of one experiment); a key some runs lack differs too.
+std::set<std::string> differing_keys(const std::vector<const RunSummary*>& runs,
+                                     const std::vector<std::string>& excluded) {
+  std::set<std::string> keys;
+  for (const auto* run : runs) {
+    for (const auto& entry : run->axes) keys.insert(entry.first);
+    for (const auto& entry : run->settings) keys.insert(entry.first);
+  }
+  std::set<std::string> differing;
+  for (const auto& key : keys) {
+    if (is_seed_key(key) || std::find(excluded.begin(), excluded.end(), key) != excluded.end()) {
+      continue;
+    }
+    const auto first = run_setting(*runs.front(), key);
+    const bool differs = std::any_of(runs.begin(), runs.end(), [&](const RunSummary* run) {
+      return run_setting(*run, key) != first;
+    });
+    if (differs) differing.insert(key);
+  }
+  return differing;
+}
+
+// What `group` pools besides seeds (RunGroup::experiments, ::differing).
+void find_pooling(RunGroup& group, const std::vector<const RunSummary*>& runs,
+                  const std::vector<std::string>& group_by) {
+  std::map<std::string, std::vector<const RunSummary*>> by_experiment;
+  for (const auto* run : runs) {
+    if (!by_experiment.count(run->experiment)) group.experiments.push_back(run->experiment);
+    by_experiment[run->experiment].push_back(run);
+  }
+  std::set<std::string> differing;
+  for (const auto& entry : by_experiment) {
+    const auto keys = differing_keys(entry.second, group_by);
+    differing.insert(keys.begin(), keys.end());
+  }
+  group.differing.assign(differing.begin(), differing.end());
+}
+
+std::string joined(const std::vector<std::string>& items) {
+  std::string text;
+  for (const auto& item : items) text += (text.empty() ? "" : ", ") + item;
+  return text;
+}
+
 std::string p_value_text(const SuccessDifference& d) {
   if (d.group_pooled.trials == 0 || d.versus_pooled.trials == 0) return "-";
   return fmt::format("{:.4g}", d.fisher_p);
@@ -103,21 +176,25 @@ RunComparison compare_runs(const std::vector<RunSummary>& runs, const Comparison
       comparison.grouping += (comparison.grouping.empty() ? "" : ", ") + key;
     }
   }
+  check_group_keys(runs, options.group_by);
   comparison.metrics = metric_columns(runs, options.extra_metrics);
 
   std::vector<int> successes;
+  std::vector<std::vector<const RunSummary*>> members;
   for (const auto& run : runs) {
     const std::string name = group_name(run, options.group_by);
     auto group = std::find_if(comparison.groups.begin(), comparison.groups.end(),
                               [&](const RunGroup& g) { return g.name == name; });
     if (group == comparison.groups.end()) {
-      comparison.groups.push_back({name, {}, 0, {}, {}, {}});
+      comparison.groups.push_back({name, {}, 0, {}, {}, {}, {}, {}});
       successes.push_back(0);
+      members.emplace_back();
       group = comparison.groups.end() - 1;
     }
     group->runs.push_back(run.id);
     group->trials += run.trials;
     successes[group - comparison.groups.begin()] += run.successes;
+    members[group - comparison.groups.begin()].push_back(&run);
     for (const auto& metric : comparison.metrics) {
       const auto value = run.metrics.find(metric);
       if (value != run.metrics.end()) group->samples[metric].push_back(value->second);
@@ -126,6 +203,7 @@ RunComparison compare_runs(const std::vector<RunSummary>& runs, const Comparison
   for (size_t i = 0; i < comparison.groups.size(); ++i) {
     RunGroup& group = comparison.groups[i];
     group.pooled_success = wilson_interval(successes[i], group.trials);
+    find_pooling(group, members[i], options.group_by);
     for (const auto& metric : comparison.metrics) {
       group.metrics[metric] = mean_interval(group.samples[metric]);
     }
@@ -157,6 +235,21 @@ RunComparison compare_runs(const std::vector<RunSummary>& runs, const Comparison
   return comparison;
 }
 
+std::vector<std::string> pooling_notes(const RunComparison& comparison) {
+  std::vector<std::string> notes;
+  for (const auto& group : comparison.groups) {
+    std::vector<std::string> parts;
+    if (group.experiments.size() > 1) parts.push_back("experiments " + joined(group.experiments));
+    if (!group.differing.empty()) {
+      parts.push_back("runs that differ in " + joined(group.differing));
+    }
+    if (parts.empty()) continue;
+    notes.push_back(fmt::format("group {} pools {}", group.name,
+                                parts.size() == 1 ? parts[0] : parts[0] + " and " + parts[1]));
+  }
+  return notes;
+}
+
 std::string comparison_markdown(const RunComparison& comparison) {
   size_t run_count = 0;
   for (const auto& group : comparison.groups) run_count += group.runs.size();
@@ -167,6 +260,14 @@ std::string comparison_markdown(const RunComparison& comparison) {
       "interval). A metric some runs did not record shows (n=...) runs. Pooled success: the "
       "trials of all the group's runs together, with a 95% Wilson interval.\n\n",
       comparison.grouping, comparison.groups.size(), run_count);
+  const auto notes = pooling_notes(comparison);
+  if (!notes.empty()) {
+    out +=
+        "**Groups pooling more than seeds:** their means, intervals and pooled trials "
+        "average unlike runs as if they were seeds.\n\n";
+    for (const auto& note : notes) out += "- " + markdown_cell(note) + "\n";
+    out += "\n";
+  }
   out += "| group | runs | trials | pooled task success |";
   std::string rule = "|---|---|---|---|";
   for (const auto& metric : comparison.metrics) {

@@ -71,6 +71,51 @@ TEST(ReportTool, ComparesTheRunsOfASweep) {
   EXPECT_NE(by_seed.out.find("| seed=3 | 1 | 4 | 2 of 4"), std::string::npos) << by_seed.out;
 }
 
+// Grouped by a setting both experiments share, each group pools the two
+// experiments: said on stderr and in compare.md, the numbers unchanged.
+TEST(ReportTool, WarnsWhenAGroupPoolsExperiments) {
+  TempDir dir;
+  {
+    ResultStore store(dir.file("r.sqlite"));
+    testing::add_sweep(store, "s2", "policies", 4);
+    int job = 0;
+    for (const std::string experiment : {"corridor_pc", "corridor_ae"}) {
+      for (int seed : {0, 1}) {
+        RunSpec spec;
+        spec.experiment = experiment;
+        spec.config = "seed: " + std::to_string(seed) + "\npolicy: {type: segmented}\n";
+        spec.sweep_id = "s2";
+        spec.job_index = job++;
+        spec.axes = "{\"seed\":\"" + std::to_string(seed) + "\"}";
+        spec.trials = testing::trials_of("push", 4, 2 + seed);
+        spec.metrics = {{"task_success_rate", (2 + seed) / 4.0}};
+        testing::record_run(store, spec);
+      }
+    }
+  }
+  const std::string warning =
+      "report: warning: group policy.type=segmented pools experiments corridor_pc, corridor_ae "
+      "(averaged as if seeds)\n";
+  const ToolOutcome md = report_tool(dir, "--compare --sweep s2 --by policy.type");
+  ASSERT_EQ(md.exit_code, 0) << md.err;
+  EXPECT_EQ(md.err, warning);
+  EXPECT_NE(md.out.find("\n- group policy.type=segmented pools experiments corridor_pc, "
+                        "corridor_ae\n"),
+            std::string::npos)
+      << md.out;
+  EXPECT_NE(md.out.find("| policy.type=segmented | 4 | 16 | 10 of 16"), std::string::npos)
+      << md.out;
+  const ToolOutcome files =
+      report_tool(dir, "--compare --sweep s2 --by policy.type --out " + dir.file("cmp"));
+  ASSERT_EQ(files.exit_code, 0) << files.err;
+  EXPECT_EQ(files.err, warning);
+  EXPECT_NE(read(dir.file("cmp/compare.md")).find("pools experiments corridor_pc, corridor_ae"),
+            std::string::npos);
+  const ToolOutcome by_experiment = report_tool(dir, "--compare --sweep s2");
+  ASSERT_EQ(by_experiment.exit_code, 0) << by_experiment.err;
+  EXPECT_EQ(by_experiment.err, "");  // seeds only
+}
+
 TEST(ReportTool, WritesTheReproductionReport) {
   TempDir dir;
   record_runs(dir);
@@ -96,6 +141,10 @@ TEST(ReportTool, SaysWhatIsWrongWithACompareInOneLine) {
       {"--compare --baseline corridor_ae",
        "report: no group 'corridor_ae' to compare with (the groups: 'corridor_pc', "
        "'corridor_mono')\n"},
+      {"--compare --sweep s1 --by nosuch.key",
+       "report: --by 'nosuch.key': no selected run has this setting\n"},
+      {"--compare --sweep s1 --by sed",
+       "report: --by 'sed': no selected run has this setting (did you mean 'seed'?)\n"},
       {"--by seed", "report: --by and --baseline need --compare\n"},
       {"--compare --reproduction", "report: --compare and --reproduction exclude each other\n"},
       {"--reproduction --sweep s1", "report: --reproduction needs --out DIR\n"},
