@@ -120,10 +120,12 @@ SuccessByParameter success_by_parameter(const std::vector<RunSummary>& runs,
 
 // The chart (plot/interval_chart.hpp, kIntervalChartWidth x
 // kIntervalChartHeight): success in percent, with intervals clipped to
-// [0, 100]. Throws std::runtime_error when the PNG cannot be written.
+// [0, 100] (metric_ranges.hpp), as its title says. Throws std::runtime_error
+// when the PNG cannot be written.
 void write_success_figure(const SuccessByParameter& data, const std::string& png_path);
 
-// group,value,runs,mean,ci_low,ci_high (rates, unclipped).
+// group,value,runs,mean,ci_low,ci_high (rates; the intervals clipped to
+// [0, 1] as in the chart, the means not).
 std::string success_csv(const SuccessByParameter& data);
 
 // Against each of swept_numeric_axes, or per experiment without one.

@@ -8,6 +8,7 @@
 #include <set>
 
 #include "core/config/did_you_mean.hpp"
+#include "experiment/metric_ranges.hpp"
 #include "experiment/report_text.hpp"
 #include "stats/fisher_exact.hpp"
 
@@ -61,6 +62,16 @@ SuccessDifference success_difference(const RunGroup& group, const RunGroup& vers
   return d;
 }
 
+// A group's interval of `metric`, clipped to the values it can take.
+IntervalBounds metric_bounds(const std::string& metric, const MeanInterval& m) {
+  return clip_interval(m.low, m.high, metric_range(metric));
+}
+
+// The interval of a difference in task_success_rate, clipped to [-1, 1].
+IntervalBounds difference_bounds(const DifferenceInterval& d) {
+  return clip_interval(d.low, d.high, difference_range(metric_range(kSuccess)));
+}
+
 std::string signed_number(double value) {
   if (std::isnan(value)) return "-";
   return (value >= 0 ? "+" : "") + report_number(value);
@@ -69,8 +80,9 @@ std::string signed_number(double value) {
 std::string difference_text(const DifferenceInterval& d) {
   if (std::isnan(d.difference)) return "-";
   if (!d.defined()) return signed_number(d.difference) + " (a group has 1 run, no interval)";
-  return fmt::format("{} [{}, {}]", signed_number(d.difference), report_number(d.low),
-                     report_number(d.high));
+  const IntervalBounds bounds = difference_bounds(d);
+  return fmt::format("{} [{}, {}]", signed_number(d.difference), report_number(bounds.low),
+                     report_number(bounds.high));
 }
 
 std::string pooled_short(const ProportionInterval& p) {
@@ -255,10 +267,12 @@ std::string comparison_markdown(const RunComparison& comparison) {
   for (const auto& group : comparison.groups) run_count += group.runs.size();
   std::string out = fmt::format(
       "# Comparison of runs\n\nGrouped by {}: {} groups, {} runs.\n\n"
-      "Each metric: the mean across the group's runs (seeds) ± the half-width of its 95% "
-      "confidence interval (Student t, n - 1 degrees of freedom; with one run there is no "
-      "interval). A metric some runs did not record shows (n=...) runs. Pooled success: the "
-      "trials of all the group's runs together, with a 95% Wilson interval.\n\n",
+      "Each metric: the mean across the group's runs (seeds) with its 95% confidence interval "
+      "[low, high] (Student t, n - 1 degrees of freedom; with one run there is no interval), "
+      "clipped to the values the metric can take: rates to [0, 1], errors, distances, times "
+      "and counts at 0 (the mean is never clipped). A metric some runs did not record shows "
+      "(n=...) runs. Pooled success: the trials of all the group's runs together, with a 95% "
+      "Wilson interval.\n\n",
       comparison.grouping, comparison.groups.size(), run_count);
   const auto notes = pooling_notes(comparison);
   if (!notes.empty()) {
@@ -280,7 +294,8 @@ std::string comparison_markdown(const RunComparison& comparison) {
                        group.trials, pooled_success_text(group.pooled_success));
     for (const auto& metric : comparison.metrics) {
       const MeanInterval& m = group.metrics.at(metric);
-      std::string cell = mean_plus_minus(m);
+      const IntervalBounds bounds = metric_bounds(metric, m);
+      std::string cell = mean_with_interval(m, bounds.low, bounds.high);
       if (m.count > 0 && static_cast<size_t>(m.count) != group.runs.size()) {
         cell += fmt::format(" (n={})", m.count);
       }
@@ -303,7 +318,7 @@ std::string comparison_markdown(const RunComparison& comparison) {
       "the trials pooled across each group's runs (seeds); pooling treats every trial as "
       "independent and ignores variation between seeds. Difference of means: the mean "
       "task_success_rate across seeds of the group minus that of the other, with a 95% Welch "
-      "t interval.\n\n"
+      "t interval clipped to [-1, 1].\n\n"
       "| group | versus | group pooled success | versus pooled success | pooled difference | "
       "Fisher p (two-sided, pooled trials) | difference of means across seeds [95% CI] |\n"
       "|---|---|---|---|---|---|---|\n";
@@ -329,9 +344,10 @@ std::string comparison_csv(const RunComparison& comparison) {
                        csv_number(p.rate), csv_number(p.low), csv_number(p.high));
     for (const auto& metric : comparison.metrics) {
       const MeanInterval& m = group.metrics.at(metric);
+      const IntervalBounds bounds = metric_bounds(metric, m);
       out += fmt::format("mean,{},,{},{},{},,{},{},{},,,\n", csv_cell(group.name), csv_cell(metric),
-                         m.count, group.trials, csv_number(m.mean), csv_number(m.low),
-                         csv_number(m.high));
+                         m.count, group.trials, csv_number(m.mean), csv_number(bounds.low),
+                         csv_number(bounds.high));
     }
   }
   for (const auto& d : comparison.differences) {
@@ -342,8 +358,9 @@ std::string comparison_csv(const RunComparison& comparison) {
     out += fmt::format(
         "difference,{},{},{},{},{},{},{},{},{},{},{},{}\n", csv_cell(d.group), csv_cell(d.versus),
         kSuccess, runs, d.group_pooled.trials, d.group_pooled.successes,
-        csv_number(d.across_seeds.difference), csv_number(d.across_seeds.low),
-        csv_number(d.across_seeds.high), d.versus_pooled.trials, d.versus_pooled.successes,
+        csv_number(d.across_seeds.difference), csv_number(difference_bounds(d.across_seeds).low),
+        csv_number(difference_bounds(d.across_seeds).high), d.versus_pooled.trials,
+        d.versus_pooled.successes,
         d.group_pooled.trials == 0 || d.versus_pooled.trials == 0 ? std::string()
                                                                   : csv_number(d.fisher_p));
   }

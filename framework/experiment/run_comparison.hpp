@@ -4,7 +4,8 @@
 // interval and its pooled task success with a Wilson interval, then the
 // difference in task success between groups: Fisher's exact test on the
 // trials pooled across seeds, and the difference of means across seeds with
-// Welch's interval. Printed as Markdown or CSV. A group that pools more than
+// Welch's interval. Printed as Markdown or CSV with every interval clipped to
+// the values its metric can take (metric_ranges.hpp). A group that pools more than
 // seeds (several experiments, or runs that differ in a setting other than a
 // seed) is named in the comparison's notes.
 #pragma once
@@ -42,7 +43,7 @@ struct RunGroup {
   int trials = 0;
   ProportionInterval pooled_success;                   // the trials of all the runs together
   std::map<std::string, std::vector<double>> samples;  // per metric, one per run having it
-  std::map<std::string, MeanInterval> metrics;         // across runs
+  std::map<std::string, MeanInterval> metrics;         // across runs; unclipped
   // What the group pools besides seeds: its experiments when it has several,
   // and the settings (sweep axes, resolved config; not seeds or the group_by
   // keys) whose values differ between its runs of one experiment.
@@ -56,7 +57,7 @@ struct SuccessDifference {
   ProportionInterval group_pooled, versus_pooled;
   double pooled_difference = 0.0;   // of the pooled rates
   double fisher_p = 0.0;            // two-sided, on the pooled 2x2 table
-  DifferenceInterval across_seeds;  // of the mean task_success_rate (Welch)
+  DifferenceInterval across_seeds;  // of the mean task_success_rate (Welch); unclipped
 };
 
 struct RunComparison {

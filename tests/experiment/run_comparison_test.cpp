@@ -103,8 +103,13 @@ TEST(RunComparison, GroupsByExperimentWithIntervalsAcrossSeeds) {
 
   const std::string md = comparison_markdown(c);
   EXPECT_NE(md.find("Grouped by experiment: 2 groups, 6 runs."), std::string::npos) << md;
-  EXPECT_NE(md.find("| corridor_pc | 3 | 12 | 11 of 12 (91.7%, 95% CI 64.6-98.5%) | 0.917 ± "
-                    "0.359 | 1.000 ± 0.000 | 0.800 ± 0.000 | 1.600 ± 0.000 |"),
+  // The interval 0.558 to 1.275 of a rate is printed clipped to 1.
+  EXPECT_NE(md.find("| corridor_pc | 3 | 12 | 11 of 12 (91.7%, 95% CI 64.6-98.5%) | 0.917 "
+                    "[0.558, 1.000] | 1.000 [1.000, 1.000] | 0.800 [0.800, 0.800] | 1.600 "
+                    "[1.600, 1.600] |"),
+            std::string::npos)
+      << md;
+  EXPECT_NE(md.find("clipped to the values the metric can take: rates to [0, 1]"),
             std::string::npos)
       << md;
   EXPECT_NE(md.find("Fisher's exact test, two-sided"), std::string::npos) << md;
@@ -125,6 +130,10 @@ TEST(RunComparison, GroupsByExperimentWithIntervalsAcrossSeeds) {
   EXPECT_NEAR(std::stod(mono["mean"]), 5.0 / 12.0, 1e-12);
   EXPECT_NEAR(std::stod(mono["ci_low"]), 0.058112272520878194, 1e-10);
   EXPECT_NEAR(std::stod(mono["ci_high"]), 0.7752210608124552, 1e-10);
+  auto pc = csv_row(csv, "mean", "corridor_pc", "task_success_rate");
+  EXPECT_NEAR(std::stod(pc["mean"]), 11.0 / 12.0, 1e-12);  // the mean is not clipped
+  EXPECT_NEAR(std::stod(pc["ci_low"]), 0.5581122725208781, 1e-10);
+  EXPECT_EQ(pc["ci_high"], "1");  // 1.275 clipped
   auto pooled = csv_row(csv, "pooled_success", "corridor_mono", "task_success");
   EXPECT_EQ(pooled["successes"], "5");
   EXPECT_NEAR(std::stod(pooled["ci_high"]), 0.6804886874504503, 1e-10);
@@ -259,6 +268,48 @@ RunSummary summary_of(int64_t id, const std::string& experiment,
   run.metrics = {{"task_success_rate", success}};
   run.metric_order = {"task_success_rate"};
   return run;
+}
+
+// Intervals are clipped to the values a metric can take (rates [0, 1],
+// errors from 0, differences of rates [-1, 1]); other metrics and the means
+// are not.
+TEST(RunComparison, ClipsIntervalsToTheValuesAMetricCanTake) {
+  std::vector<RunSummary> runs = {
+      summary_of(1, "a", {{"seed", "0"}}, 1.0), summary_of(2, "a", {{"seed", "1"}}, 0.25),
+      summary_of(3, "b", {{"seed", "0"}}, 0.0), summary_of(4, "b", {{"seed", "1"}}, 0.75)};
+  const std::vector<std::pair<double, double>> values = {{0.1, -1.0}, {3.0, 1.0}};
+  for (size_t i = 0; i < runs.size(); ++i) {
+    runs[i].metrics["cor_mp_error_mean_cm"] = values[i % 2].first;
+    runs[i].metrics["offset_x"] = values[i % 2].second;
+    runs[i].metric_order.push_back("cor_mp_error_mean_cm");
+  }
+  ComparisonOptions options;
+  options.extra_metrics = {"offset_x"};
+  const RunComparison c = compare_runs(runs, options);
+  EXPECT_NEAR(c.groups[0].metrics.at("task_success_rate").low, -4.139826776075, 1e-9);
+
+  const std::string csv = comparison_csv(c);
+  auto success = csv_row(csv, "mean", "a", "task_success_rate");
+  EXPECT_EQ(success["mean"], "0.625");
+  EXPECT_EQ(success["ci_low"], "0");
+  EXPECT_EQ(success["ci_high"], "1");
+  auto error = csv_row(csv, "mean", "a", "cor_mp_error_mean_cm");
+  EXPECT_EQ(error["ci_low"], "0");  // -16.87 clipped
+  EXPECT_NEAR(std::stod(error["ci_high"]), 19.97399686749, 1e-9);
+  auto offset = csv_row(csv, "mean", "a", "offset_x");
+  EXPECT_NEAR(std::stod(offset["ci_low"]), -12.7062047362, 1e-8);  // unbounded: as computed
+  auto difference = csv_row(csv, "difference", "a", "task_success_rate");
+  EXPECT_EQ(difference["mean"], "0.25");
+  EXPECT_EQ(difference["ci_low"], "-1");
+  EXPECT_EQ(difference["ci_high"], "1");
+
+  const std::string md = comparison_markdown(c);
+  EXPECT_NE(md.find("| a | 2 | 8 | 5 of 8 (62.5%, 95% CI 30.6-86.3%) | 0.625 [0.000, 1.000] | "
+                    "1.550 [0.000, 19.974] | 0.000 [-12.706, 12.706] |"),
+            std::string::npos)
+      << md;
+  EXPECT_NE(md.find("| +0.250 [-1.000, 1.000] |"), std::string::npos) << md;
+  EXPECT_NE(md.find("Welch t interval clipped to [-1, 1]"), std::string::npos) << md;
 }
 
 // Groups that pool more than seeds are named, with what they pool; the
