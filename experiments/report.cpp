@@ -107,6 +107,7 @@ int main(int argc, char** argv) {
   app.footer(kExamples);
   if (const auto exit_code = corrmp::parse_command_line(app, argc, argv)) return *exit_code;
   query.completed_only = !all;
+  format.status_column = all;
   if (paper) format.paper_tables = std::string(CORRMP_SOURCE_DIR) + "/assets/paper/tables.yaml";
 
   if (compare && reproduction)
@@ -163,6 +164,9 @@ int main(int argc, char** argv) {
     if (compare) {
       comparison.extra_metrics = format.extra_metrics;
       const auto result = corrmp::compare_runs(runs, comparison);
+      for (const auto& note : corrmp::pooling_notes(result)) {
+        std::cerr << "report: warning: " << note << " (averaged as if seeds)\n";
+      }
       if (out_dir.empty()) {
         std::cout << (csv ? corrmp::comparison_csv(result) : corrmp::comparison_markdown(result));
       } else {

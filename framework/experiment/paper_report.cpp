@@ -12,6 +12,7 @@
 #include <set>
 #include <tuple>
 
+#include "experiment/metric_ranges.hpp"
 #include "experiment/report_text.hpp"
 #include "stats/mean_interval.hpp"
 #include "stats/wilson_interval.hpp"
@@ -76,17 +77,18 @@ std::string interval_text(const MeanInterval& m, double low, double high, bool p
   return text;
 }
 
-// A cell of a metric across runs; its interval is clipped at 0, and rates'
-// (percent) at 1. Without a paper value the verdict says so.
+// A cell of a metric across runs; its interval is clipped to the values the
+// metric can take (metric_ranges.hpp: errors at 0, rates to [0, 1]). Without
+// a paper value the verdict says so.
 Cell metric_cell(const std::string& table, const std::string& row, const std::string& group,
                  const std::string& metric, const std::vector<const RunSummary*>& runs,
                  bool percent, const std::optional<double>& paper, double rounding,
                  bool higher_is_better) {
   const MeanInterval m = mean_interval(samples(runs, metric));
   Cell cell{table, row, group, metric, m.count, m.mean, m.low, m.high, "", "", ""};
-  // Every metric here is non-negative (rates, errors); rates are at most 1.
-  if (m.defined()) cell.low = std::max(0.0, m.low);
-  if (percent && m.defined()) cell.high = std::min(1.0, m.high);
+  const IntervalBounds clipped = clip_interval(m.low, m.high, metric_range(metric));
+  cell.low = clipped.low;
+  cell.high = clipped.high;
   cell.ours = interval_text(m, cell.low, cell.high, percent, runs.size());
   if (paper) {
     cell.paper = percent ? fmt::format("{:.0f}%", 100 * *paper) : fmt::format("{:.2f}", *paper);

@@ -29,10 +29,10 @@ std::string csv_number(double value) {
   return std::isnan(value) ? std::string() : fmt::format("{}", value);
 }
 
-std::string mean_plus_minus(const MeanInterval& m) {
+std::string mean_with_interval(const MeanInterval& m, double low, double high) {
   if (m.count == 0) return "-";
   if (!m.defined()) return report_number(m.mean) + " (1 run, no interval)";
-  return report_number(m.mean) + " ± " + report_number(m.half_width);
+  return fmt::format("{} [{}, {}]", report_number(m.mean), report_number(low), report_number(high));
 }
 
 std::string pooled_success_text(const ProportionInterval& p) {

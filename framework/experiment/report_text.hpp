@@ -21,9 +21,10 @@ std::string report_number(double value);
 // A CSV number at full precision; empty for NaN.
 std::string csv_number(double value);
 
-// "0.960 ± 0.099" (mean ± half-width of the interval); "0.700 (1 run, no
-// interval)" with one run; "-" with none.
-std::string mean_plus_minus(const MeanInterval& m);
+// "0.960 [0.861, 1.000]": the mean and its interval's bounds as given (e.g.
+// clipped, metric_ranges.hpp); "0.700 (1 run, no interval)" with one run;
+// "-" with none.
+std::string mean_with_interval(const MeanInterval& m, double low, double high);
 // "72 of 75 (96.0%, 95% CI 89.0-98.6%)" (Wilson); "no trials" without any.
 std::string pooled_success_text(const ProportionInterval& p);
 

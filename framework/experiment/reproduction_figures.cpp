@@ -14,6 +14,7 @@
 #include <set>
 #include <sstream>
 
+#include "experiment/metric_ranges.hpp"
 #include "plot/interval_chart.hpp"
 #include "plot/line_figure.hpp"
 #include "store/statement.hpp"
@@ -181,6 +182,11 @@ void add_paths(LinePanel& panel, const std::string& segment, const SegmentPath& 
 }
 
 // ---- 2. success against a parameter --------------------------------------
+
+// A success rate's interval clipped to [0, 1]; NaN without one (one run).
+IntervalBounds success_bounds(const MeanInterval& m) {
+  return clip_interval(m.low, m.high, metric_range("task_success_rate"));
+}
 
 std::string group_of(const RunSummary& run, const std::string& key) {
   std::string group = key == "experiment" ? "" : run.experiment;
@@ -405,12 +411,6 @@ void add_trajectory_comparison(FigureSet& set, const RunSummary& run, const RunF
 
 // ---- 2 -----------------------------------------------------------------------
 
-bool is_seed_key(const std::string& key) {
-  const std::string suffix = ".seed";
-  return key == "seed" || (key.size() > suffix.size() &&
-                           key.compare(key.size() - suffix.size(), suffix.size(), suffix) == 0);
-}
-
 std::vector<std::string> swept_numeric_axes(const std::vector<RunSummary>& runs) {
   std::map<std::string, std::set<std::string>> values;
   std::set<std::string> not_numeric;
@@ -475,10 +475,11 @@ void write_success_figure(const SuccessByParameter& data, const std::string& png
   IntervalChart chart;
   const bool per_experiment = data.key == "experiment";
   chart.title = per_experiment
-                    ? "Task success per experiment: mean across seeds with its 95% interval"
+                    ? "Task success per experiment: mean across seeds, 95% interval clipped "
+                      "to 0-100%"
                     : fmt::format(
-                          "Task success against {}: mean across seeds with its 95% "
-                          "interval",
+                          "Task success against {}: mean across seeds, 95% interval clipped to "
+                          "0-100%",
                           data.key);
   chart.x_label = data.key;
   chart.y_label = "task success (%)";
@@ -490,9 +491,8 @@ void write_success_figure(const SuccessByParameter& data, const std::string& png
     IntervalSeries drawn{series.group.empty() ? "task success" : series.group, {}};
     for (const auto& point : series.points) {
       const MeanInterval& m = point.success;
-      const double low = m.defined() ? 100.0 * std::max(0.0, m.low) : kNaN;
-      const double high = m.defined() ? 100.0 * std::min(1.0, m.high) : kNaN;
-      drawn.points.push_back({point.x, 100.0 * m.mean, low, high});
+      const IntervalBounds bounds = success_bounds(m);
+      drawn.points.push_back({point.x, 100.0 * m.mean, 100.0 * bounds.low, 100.0 * bounds.high});
     }
     chart.series.push_back(std::move(drawn));
   }
@@ -504,8 +504,9 @@ std::string success_csv(const SuccessByParameter& data) {
   std::string out = "group,value,runs,mean,ci_low,ci_high\n";
   for (const auto& series : data.series) {
     for (const auto& p : series.points) {
+      const IntervalBounds bounds = success_bounds(p.success);
       out += fmt::format("{},{},{},{},{},{}\n", series.group, p.value, p.success.count,
-                         number(p.success.mean), number(p.success.low), number(p.success.high));
+                         number(p.success.mean), number(bounds.low), number(bounds.high));
     }
   }
   return out;
@@ -527,11 +528,12 @@ void add_success_figures(FigureSet& set, const std::vector<RunSummary>& runs,
     std::string caption =
         key == "experiment"
             ? "Task success per experiment: the mean of the runs' task success rates across "
-              "seeds (dots) with its 95% Student t interval (bars; none with one run)"
+              "seeds (dots) with its 95% Student t interval (bars, clipped to 0-100%; none "
+              "with one run)"
             : fmt::format(
                   "Task success against {}: the mean of the runs' task success rates "
                   "across seeds (dots, one line per group) with its 95% Student t "
-                  "interval (bars; none with one run)",
+                  "interval (bars, clipped to 0-100%; none with one run)",
                   key);
     if (data.skipped_runs > 0) {
       caption += fmt::format("; {} run{} without a task success rate or {} left out",

@@ -87,10 +87,6 @@ void add_trajectory_comparison(FigureSet& set, const RunSummary& run, const RunF
 
 // ---- 2. Success against a swept parameter ------------------------------
 
-// Whether a setting key is a seed (seed, evaluation.seed, ...): seeds are
-// the replicates a mean is taken over, never a parameter.
-bool is_seed_key(const std::string& key);
-
 // The sweep axes, other than seeds, whose values are all numbers and take two
 // or more values across the runs; sorted.
 std::vector<std::string> swept_numeric_axes(const std::vector<RunSummary>& runs);
@@ -124,10 +120,12 @@ SuccessByParameter success_by_parameter(const std::vector<RunSummary>& runs,
 
 // The chart (plot/interval_chart.hpp, kIntervalChartWidth x
 // kIntervalChartHeight): success in percent, with intervals clipped to
-// [0, 100]. Throws std::runtime_error when the PNG cannot be written.
+// [0, 100] (metric_ranges.hpp), as its title says. Throws std::runtime_error
+// when the PNG cannot be written.
 void write_success_figure(const SuccessByParameter& data, const std::string& png_path);
 
-// group,value,runs,mean,ci_low,ci_high (rates, unclipped).
+// group,value,runs,mean,ci_low,ci_high (rates; the intervals clipped to
+// [0, 1] as in the chart, the means not).
 std::string success_csv(const SuccessByParameter& data);
 
 // Against each of swept_numeric_axes, or per experiment without one.

@@ -5,7 +5,10 @@
 
 #include <algorithm>
 #include <cmath>
+#include <set>
 
+#include "core/config/did_you_mean.hpp"
+#include "experiment/metric_ranges.hpp"
 #include "experiment/report_text.hpp"
 #include "stats/fisher_exact.hpp"
 
@@ -59,6 +62,16 @@ SuccessDifference success_difference(const RunGroup& group, const RunGroup& vers
   return d;
 }
 
+// A group's interval of `metric`, clipped to the values it can take.
+IntervalBounds metric_bounds(const std::string& metric, const MeanInterval& m) {
+  return clip_interval(m.low, m.high, metric_range(metric));
+}
+
+// The interval of a difference in task_success_rate, clipped to [-1, 1].
+IntervalBounds difference_bounds(const DifferenceInterval& d) {
+  return clip_interval(d.low, d.high, difference_range(metric_range(kSuccess)));
+}
+
 std::string signed_number(double value) {
   if (std::isnan(value)) return "-";
   return (value >= 0 ? "+" : "") + report_number(value);
@@ -67,13 +80,85 @@ std::string signed_number(double value) {
 std::string difference_text(const DifferenceInterval& d) {
   if (std::isnan(d.difference)) return "-";
   if (!d.defined()) return signed_number(d.difference) + " (a group has 1 run, no interval)";
-  return fmt::format("{} [{}, {}]", signed_number(d.difference), report_number(d.low),
-                     report_number(d.high));
+  const IntervalBounds bounds = difference_bounds(d);
+  return fmt::format("{} [{}, {}]", signed_number(d.difference), report_number(bounds.low),
+                     report_number(bounds.high));
 }
 
 std::string pooled_short(const ProportionInterval& p) {
   if (p.trials == 0) return "no trials";
   return fmt::format("{} of {} ({:.1f}%)", p.successes, p.trials, 100 * p.rate);
+}
+
+// Every group_by key must be a setting of some run: a key none has would put
+// every run in one "(unset)" group. The error suggests a close key.
+void check_group_keys(const std::vector<RunSummary>& runs, const std::vector<std::string>& keys) {
+  for (const auto& key : keys) {
+    const bool found = std::any_of(runs.begin(), runs.end(), [&](const RunSummary& run) {
+      return run_setting(run, key).has_value();
+    });
+    if (found) continue;
+    std::set<std::string> known{"experiment"};
+    for (const auto& run : runs) {
+      for (const auto& entry : run.axes) known.insert(entry.first);
+      for (const auto& entry : run.settings) known.insert(entry.first);
+    }
+    std::vector<std::string> candidates(known.begin(), known.end());
+    std::string hint = did_you_mean(key, candidates);
+    if (hint.empty()) {  // "updates" for "policy.training.updates"
+      const auto suffix = std::find_if(candidates.begin(), candidates.end(), [&](const auto& c) {
+        return c.size() > key.size() && c.compare(c.size() - key.size(), key.size(), key) == 0 &&
+               c[c.size() - key.size() - 1] == '.';
+      });
+      if (suffix != candidates.end()) hint = " (did you mean '" + *suffix + "'?)";
+    }
+    throw ComparisonError(fmt::format("--by '{}': no selected run has this setting{}", key, hint));
+  }
+}
+
+// The keys, other than seeds and `excluded`, whose values differ between
+// `runs` (all of one experiment); a key some runs lack differs too.
+std::set<std::string> differing_keys(const std::vector<const RunSummary*>& runs,
+                                     const std::vector<std::string>& excluded) {
+  std::set<std::string> keys;
+  for (const auto* run : runs) {
+    for (const auto& entry : run->axes) keys.insert(entry.first);
+    for (const auto& entry : run->settings) keys.insert(entry.first);
+  }
+  std::set<std::string> differing;
+  for (const auto& key : keys) {
+    if (is_seed_key(key) || std::find(excluded.begin(), excluded.end(), key) != excluded.end()) {
+      continue;
+    }
+    const auto first = run_setting(*runs.front(), key);
+    const bool differs = std::any_of(runs.begin(), runs.end(), [&](const RunSummary* run) {
+      return run_setting(*run, key) != first;
+    });
+    if (differs) differing.insert(key);
+  }
+  return differing;
+}
+
+// What `group` pools besides seeds (RunGroup::experiments, ::differing).
+void find_pooling(RunGroup& group, const std::vector<const RunSummary*>& runs,
+                  const std::vector<std::string>& group_by) {
+  std::map<std::string, std::vector<const RunSummary*>> by_experiment;
+  for (const auto* run : runs) {
+    if (!by_experiment.count(run->experiment)) group.experiments.push_back(run->experiment);
+    by_experiment[run->experiment].push_back(run);
+  }
+  std::set<std::string> differing;
+  for (const auto& entry : by_experiment) {
+    const auto keys = differing_keys(entry.second, group_by);
+    differing.insert(keys.begin(), keys.end());
+  }
+  group.differing.assign(differing.begin(), differing.end());
+}
+
+std::string joined(const std::vector<std::string>& items) {
+  std::string text;
+  for (const auto& item : items) text += (text.empty() ? "" : ", ") + item;
+  return text;
 }
 
 std::string p_value_text(const SuccessDifference& d) {
@@ -103,21 +188,25 @@ RunComparison compare_runs(const std::vector<RunSummary>& runs, const Comparison
       comparison.grouping += (comparison.grouping.empty() ? "" : ", ") + key;
     }
   }
+  check_group_keys(runs, options.group_by);
   comparison.metrics = metric_columns(runs, options.extra_metrics);
 
   std::vector<int> successes;
+  std::vector<std::vector<const RunSummary*>> members;
   for (const auto& run : runs) {
     const std::string name = group_name(run, options.group_by);
     auto group = std::find_if(comparison.groups.begin(), comparison.groups.end(),
                               [&](const RunGroup& g) { return g.name == name; });
     if (group == comparison.groups.end()) {
-      comparison.groups.push_back({name, {}, 0, {}, {}, {}});
+      comparison.groups.push_back({name, {}, 0, {}, {}, {}, {}, {}});
       successes.push_back(0);
+      members.emplace_back();
       group = comparison.groups.end() - 1;
     }
     group->runs.push_back(run.id);
     group->trials += run.trials;
     successes[group - comparison.groups.begin()] += run.successes;
+    members[group - comparison.groups.begin()].push_back(&run);
     for (const auto& metric : comparison.metrics) {
       const auto value = run.metrics.find(metric);
       if (value != run.metrics.end()) group->samples[metric].push_back(value->second);
@@ -126,6 +215,7 @@ RunComparison compare_runs(const std::vector<RunSummary>& runs, const Comparison
   for (size_t i = 0; i < comparison.groups.size(); ++i) {
     RunGroup& group = comparison.groups[i];
     group.pooled_success = wilson_interval(successes[i], group.trials);
+    find_pooling(group, members[i], options.group_by);
     for (const auto& metric : comparison.metrics) {
       group.metrics[metric] = mean_interval(group.samples[metric]);
     }
@@ -157,16 +247,41 @@ RunComparison compare_runs(const std::vector<RunSummary>& runs, const Comparison
   return comparison;
 }
 
+std::vector<std::string> pooling_notes(const RunComparison& comparison) {
+  std::vector<std::string> notes;
+  for (const auto& group : comparison.groups) {
+    std::vector<std::string> parts;
+    if (group.experiments.size() > 1) parts.push_back("experiments " + joined(group.experiments));
+    if (!group.differing.empty()) {
+      parts.push_back("runs that differ in " + joined(group.differing));
+    }
+    if (parts.empty()) continue;
+    notes.push_back(fmt::format("group {} pools {}", group.name,
+                                parts.size() == 1 ? parts[0] : parts[0] + " and " + parts[1]));
+  }
+  return notes;
+}
+
 std::string comparison_markdown(const RunComparison& comparison) {
   size_t run_count = 0;
   for (const auto& group : comparison.groups) run_count += group.runs.size();
   std::string out = fmt::format(
       "# Comparison of runs\n\nGrouped by {}: {} groups, {} runs.\n\n"
-      "Each metric: the mean across the group's runs (seeds) ± the half-width of its 95% "
-      "confidence interval (Student t, n - 1 degrees of freedom; with one run there is no "
-      "interval). A metric some runs did not record shows (n=...) runs. Pooled success: the "
-      "trials of all the group's runs together, with a 95% Wilson interval.\n\n",
+      "Each metric: the mean across the group's runs (seeds) with its 95% confidence interval "
+      "[low, high] (Student t, n - 1 degrees of freedom; with one run there is no interval), "
+      "clipped to the values the metric can take: rates to [0, 1], errors, distances, times "
+      "and counts at 0 (the mean is never clipped). A metric some runs did not record shows "
+      "(n=...) runs. Pooled success: the trials of all the group's runs together, with a 95% "
+      "Wilson interval.\n\n",
       comparison.grouping, comparison.groups.size(), run_count);
+  const auto notes = pooling_notes(comparison);
+  if (!notes.empty()) {
+    out +=
+        "**Groups pooling more than seeds:** their means, intervals and pooled trials "
+        "average unlike runs as if they were seeds.\n\n";
+    for (const auto& note : notes) out += "- " + markdown_cell(note) + "\n";
+    out += "\n";
+  }
   out += "| group | runs | trials | pooled task success |";
   std::string rule = "|---|---|---|---|";
   for (const auto& metric : comparison.metrics) {
@@ -179,7 +294,8 @@ std::string comparison_markdown(const RunComparison& comparison) {
                        group.trials, pooled_success_text(group.pooled_success));
     for (const auto& metric : comparison.metrics) {
       const MeanInterval& m = group.metrics.at(metric);
-      std::string cell = mean_plus_minus(m);
+      const IntervalBounds bounds = metric_bounds(metric, m);
+      std::string cell = mean_with_interval(m, bounds.low, bounds.high);
       if (m.count > 0 && static_cast<size_t>(m.count) != group.runs.size()) {
         cell += fmt::format(" (n={})", m.count);
       }
@@ -202,7 +318,7 @@ std::string comparison_markdown(const RunComparison& comparison) {
       "the trials pooled across each group's runs (seeds); pooling treats every trial as "
       "independent and ignores variation between seeds. Difference of means: the mean "
       "task_success_rate across seeds of the group minus that of the other, with a 95% Welch "
-      "t interval.\n\n"
+      "t interval clipped to [-1, 1].\n\n"
       "| group | versus | group pooled success | versus pooled success | pooled difference | "
       "Fisher p (two-sided, pooled trials) | difference of means across seeds [95% CI] |\n"
       "|---|---|---|---|---|---|---|\n";
@@ -228,9 +344,10 @@ std::string comparison_csv(const RunComparison& comparison) {
                        csv_number(p.rate), csv_number(p.low), csv_number(p.high));
     for (const auto& metric : comparison.metrics) {
       const MeanInterval& m = group.metrics.at(metric);
+      const IntervalBounds bounds = metric_bounds(metric, m);
       out += fmt::format("mean,{},,{},{},{},,{},{},{},,,\n", csv_cell(group.name), csv_cell(metric),
-                         m.count, group.trials, csv_number(m.mean), csv_number(m.low),
-                         csv_number(m.high));
+                         m.count, group.trials, csv_number(m.mean), csv_number(bounds.low),
+                         csv_number(bounds.high));
     }
   }
   for (const auto& d : comparison.differences) {
@@ -241,8 +358,9 @@ std::string comparison_csv(const RunComparison& comparison) {
     out += fmt::format(
         "difference,{},{},{},{},{},{},{},{},{},{},{},{}\n", csv_cell(d.group), csv_cell(d.versus),
         kSuccess, runs, d.group_pooled.trials, d.group_pooled.successes,
-        csv_number(d.across_seeds.difference), csv_number(d.across_seeds.low),
-        csv_number(d.across_seeds.high), d.versus_pooled.trials, d.versus_pooled.successes,
+        csv_number(d.across_seeds.difference), csv_number(difference_bounds(d.across_seeds).low),
+        csv_number(difference_bounds(d.across_seeds).high), d.versus_pooled.trials,
+        d.versus_pooled.successes,
         d.group_pooled.trials == 0 || d.versus_pooled.trials == 0 ? std::string()
                                                                   : csv_number(d.fisher_p));
   }

@@ -4,7 +4,10 @@
 // interval and its pooled task success with a Wilson interval, then the
 // difference in task success between groups: Fisher's exact test on the
 // trials pooled across seeds, and the difference of means across seeds with
-// Welch's interval. Printed as Markdown or CSV.
+// Welch's interval. Printed as Markdown or CSV with every interval clipped to
+// the values its metric can take (metric_ranges.hpp). A group that pools more than
+// seeds (several experiments, or runs that differ in a setting other than a
+// seed) is named in the comparison's notes.
 #pragma once
 
 #include <cstdint>
@@ -19,7 +22,8 @@
 
 namespace corrmp {
 
-// A comparison that cannot be made as asked (no runs, an unknown baseline).
+// A comparison that cannot be made as asked (no runs, a group_by key no run
+// has, an unknown baseline).
 class ComparisonError : public std::runtime_error {
  public:
   using std::runtime_error::runtime_error;
@@ -39,7 +43,12 @@ struct RunGroup {
   int trials = 0;
   ProportionInterval pooled_success;                   // the trials of all the runs together
   std::map<std::string, std::vector<double>> samples;  // per metric, one per run having it
-  std::map<std::string, MeanInterval> metrics;         // across runs
+  std::map<std::string, MeanInterval> metrics;         // across runs; unclipped
+  // What the group pools besides seeds: its experiments when it has several,
+  // and the settings (sweep axes, resolved config; not seeds or the group_by
+  // keys) whose values differ between its runs of one experiment.
+  std::vector<std::string> experiments;  // in the order of their first run
+  std::vector<std::string> differing;    // sorted
 };
 
 // Task success of `group` against `versus` (group minus versus).
@@ -48,7 +57,7 @@ struct SuccessDifference {
   ProportionInterval group_pooled, versus_pooled;
   double pooled_difference = 0.0;   // of the pooled rates
   double fisher_p = 0.0;            // two-sided, on the pooled 2x2 table
-  DifferenceInterval across_seeds;  // of the mean task_success_rate (Welch)
+  DifferenceInterval across_seeds;  // of the mean task_success_rate (Welch); unclipped
 };
 
 struct RunComparison {
@@ -58,8 +67,13 @@ struct RunComparison {
   std::vector<SuccessDifference> differences;
 };
 
-// Throws ComparisonError without runs or when the baseline is not a group.
+// Throws ComparisonError without runs, when no run has a group_by key (every
+// run would be "(unset)") or when the baseline is not a group.
 RunComparison compare_runs(const std::vector<RunSummary>& runs, const ComparisonOptions& options);
+
+// One line per group that pools more than seeds: "group G pools experiments
+// a, b" and/or "... runs that differ in k1, k2"; empty when none does.
+std::vector<std::string> pooling_notes(const RunComparison& comparison);
 
 // The grouping key of a run: its experiment, or the group_by values.
 std::string group_name(const RunSummary& run, const std::vector<std::string>& group_by);

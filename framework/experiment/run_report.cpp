@@ -131,8 +131,14 @@ std::string report_markdown(const std::vector<RunSummary>& runs, const ReportFor
       if (!known) errors.push_back({mean.substr(0, at), mean.substr(at + kErrorMarker.size())});
     }
   }
-  std::string out = "| run | experiment | varies | task success | decision match |";
-  std::string rule = "|---|---|---|---|---|";
+  std::string out = "| run | experiment |";
+  std::string rule = "|---|---|";
+  if (format.status_column) {
+    out += " status |";
+    rule += "---|";
+  }
+  out += " varies | task success | decision match |";
+  rule += "---|---|---|";
   for (const auto& column : errors) {
     out += " " + column.heading() + " |";
     rule += "---|";
@@ -143,9 +149,10 @@ std::string report_markdown(const std::vector<RunSummary>& runs, const ReportFor
   }
   out += "\n" + rule + "\n";
   for (const auto& run : runs) {
-    out += fmt::format("| {} | {} | {} | {} | {} |", run.id, markdown_cell(run.experiment),
-                       markdown_cell(varies_text(run, varying)), success_text(run),
-                       percent_text(metric(run, "decision_match_rate")));
+    out += fmt::format("| {} | {} |", run.id, markdown_cell(run.experiment));
+    if (format.status_column) out += " " + markdown_cell(run.status) + " |";
+    out += fmt::format(" {} | {} | {} |", markdown_cell(varies_text(run, varying)),
+                       success_text(run), percent_text(metric(run, "decision_match_rate")));
     for (const auto& column : errors) out += " " + pair_text(run, column) + " |";
     for (const auto& name : format.extra_metrics) {
       out += " " + number(metric(run, name), "{:.4g}") + " |";
@@ -154,7 +161,8 @@ std::string report_markdown(const std::vector<RunSummary>& runs, const ReportFor
   }
   {
     for (const auto& row : paper) {
-      out += fmt::format("| | {} | | {} | {} |", row.label, row.success, row.decision);
+      out += fmt::format("| | {} |{} | {} | {} |", row.label, format.status_column ? " |" : "",
+                         row.success, row.decision);
       for (const auto& column : errors) {
         const auto cell = row.errors.find(column.mean());
         out += " " + (cell == row.errors.end() ? std::string() : cell->second) + " |";

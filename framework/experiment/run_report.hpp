@@ -15,6 +15,9 @@ struct ReportFormat {
   std::vector<std::string> extra_metrics;  // more metric columns, by name
   std::string paper_tables;  // when set, the paper's PC, AE and Mono rows from this file
                              // (assets/paper/tables.yaml) are appended (Markdown only)
+  // Each run's status (completed, failed, ...) in a column of the Markdown
+  // table, for report --all; the CSV always has one.
+  bool status_column = false;
 };
 
 std::string report_markdown(const std::vector<RunSummary>& runs, const ReportFormat& format);

@@ -177,6 +177,12 @@ std::optional<std::string> run_setting(const RunSummary& run, const std::string&
   return std::nullopt;
 }
 
+bool is_seed_key(const std::string& key) {
+  const std::string suffix = ".seed";
+  return key == "seed" || (key.size() > suffix.size() &&
+                           key.compare(key.size() - suffix.size(), suffix.size(), suffix) == 0);
+}
+
 std::map<std::string, std::vector<std::string>> varying_settings(
     const std::vector<RunSummary>& runs) {
   std::map<std::string, std::vector<const RunSummary*>> by_experiment;

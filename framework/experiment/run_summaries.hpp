@@ -68,6 +68,10 @@ std::optional<SweepSummary> find_sweep(ResultStore& store, const std::string& id
 // name. Nothing when the run has no such setting.
 std::optional<std::string> run_setting(const RunSummary& run, const std::string& key);
 
+// Whether a setting key is a seed (seed, evaluation.seed, ...): seeds are
+// the replicates a mean is taken over, never a parameter.
+bool is_seed_key(const std::string& key);
+
 // A YAML document as dotted key paths to scalar text; lists are one value in
 // flow style ("[a, b]"), lists of maps are indexed ("segments.0.name").
 std::map<std::string, std::string> flatten_yaml(const std::string& yaml);

@@ -64,11 +64,61 @@ TEST(ReportTool, ComparesTheRunsOfASweep) {
   ASSERT_EQ(files.exit_code, 0) << files.err;
   EXPECT_NE(read(dir.file("cmp/compare.md")).find("| corridor_pc | 2 | 8 | 7 of 8"),
             std::string::npos);
-  EXPECT_EQ(read(dir.file("cmp/compare.csv")).rfind("kind,group,versus,metric", 0), 0u);
+  const std::string written = read(dir.file("cmp/compare.csv"));
+  EXPECT_EQ(written.rfind("kind,group,versus,metric", 0), 0u);
+  // corridor_pc's success 0.875 -/+ 1.588 across its two seeds, clipped.
+  EXPECT_NE(written.find("\nmean,corridor_pc,,task_success_rate,2,8,,0.875,0,1,,,\n"),
+            std::string::npos)
+      << written;
 
   const ToolOutcome by_seed = report_tool(dir, "--compare --sweep s1 --by seed");
   ASSERT_EQ(by_seed.exit_code, 0) << by_seed.err;
   EXPECT_NE(by_seed.out.find("| seed=3 | 1 | 4 | 2 of 4"), std::string::npos) << by_seed.out;
+}
+
+// Grouped by a setting both experiments share, each group pools the two
+// experiments: said on stderr and in compare.md, the numbers unchanged.
+TEST(ReportTool, WarnsWhenAGroupPoolsExperiments) {
+  TempDir dir;
+  {
+    ResultStore store(dir.file("r.sqlite"));
+    testing::add_sweep(store, "s2", "policies", 4);
+    int job = 0;
+    for (const std::string experiment : {"corridor_pc", "corridor_ae"}) {
+      for (int seed : {0, 1}) {
+        RunSpec spec;
+        spec.experiment = experiment;
+        spec.config = "seed: " + std::to_string(seed) + "\npolicy: {type: segmented}\n";
+        spec.sweep_id = "s2";
+        spec.job_index = job++;
+        spec.axes = "{\"seed\":\"" + std::to_string(seed) + "\"}";
+        spec.trials = testing::trials_of("push", 4, 2 + seed);
+        spec.metrics = {{"task_success_rate", (2 + seed) / 4.0}};
+        testing::record_run(store, spec);
+      }
+    }
+  }
+  const std::string warning =
+      "report: warning: group policy.type=segmented pools experiments corridor_pc, corridor_ae "
+      "(averaged as if seeds)\n";
+  const ToolOutcome md = report_tool(dir, "--compare --sweep s2 --by policy.type");
+  ASSERT_EQ(md.exit_code, 0) << md.err;
+  EXPECT_EQ(md.err, warning);
+  EXPECT_NE(md.out.find("\n- group policy.type=segmented pools experiments corridor_pc, "
+                        "corridor_ae\n"),
+            std::string::npos)
+      << md.out;
+  EXPECT_NE(md.out.find("| policy.type=segmented | 4 | 16 | 10 of 16"), std::string::npos)
+      << md.out;
+  const ToolOutcome files =
+      report_tool(dir, "--compare --sweep s2 --by policy.type --out " + dir.file("cmp"));
+  ASSERT_EQ(files.exit_code, 0) << files.err;
+  EXPECT_EQ(files.err, warning);
+  EXPECT_NE(read(dir.file("cmp/compare.md")).find("pools experiments corridor_pc, corridor_ae"),
+            std::string::npos);
+  const ToolOutcome by_experiment = report_tool(dir, "--compare --sweep s2");
+  ASSERT_EQ(by_experiment.exit_code, 0) << by_experiment.err;
+  EXPECT_EQ(by_experiment.err, "");  // seeds only
 }
 
 TEST(ReportTool, WritesTheReproductionReport) {
@@ -96,6 +146,10 @@ TEST(ReportTool, SaysWhatIsWrongWithACompareInOneLine) {
       {"--compare --baseline corridor_ae",
        "report: no group 'corridor_ae' to compare with (the groups: 'corridor_pc', "
        "'corridor_mono')\n"},
+      {"--compare --sweep s1 --by nosuch.key",
+       "report: --by 'nosuch.key': no selected run has this setting\n"},
+      {"--compare --sweep s1 --by sed",
+       "report: --by 'sed': no selected run has this setting (did you mean 'seed'?)\n"},
       {"--by seed", "report: --by and --baseline need --compare\n"},
       {"--compare --reproduction", "report: --compare and --reproduction exclude each other\n"},
       {"--reproduction --sweep s1", "report: --reproduction needs --out DIR\n"},

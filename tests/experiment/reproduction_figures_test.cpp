@@ -95,7 +95,9 @@ TEST(ReproductionFigures, SuccessAgainstANumericAxisHasMeansAndIntervalsPerValue
 
   const std::string csv = success_csv(data);
   EXPECT_TRUE(contains(csv, "group,value,runs,mean,ci_low,ci_high\n")) << csv;
-  EXPECT_TRUE(contains(csv, "corridor_pc,5000,3,0.4,")) << csv;
+  // 0.4 -/+ 0.497 and 0.6 -/+ 1.27: clipped to the rates a run can have.
+  EXPECT_TRUE(contains(csv, "corridor_pc,5000,3,0.4,0,0.896828\n")) << csv;
+  EXPECT_TRUE(contains(csv, "corridor_pc,20000,2,0.6,0,1\n")) << csv;
   EXPECT_TRUE(contains(csv, "corridor_mono,20000,1,1,,\n")) << csv;
 }
 

@@ -103,8 +103,13 @@ TEST(RunComparison, GroupsByExperimentWithIntervalsAcrossSeeds) {
 
   const std::string md = comparison_markdown(c);
   EXPECT_NE(md.find("Grouped by experiment: 2 groups, 6 runs."), std::string::npos) << md;
-  EXPECT_NE(md.find("| corridor_pc | 3 | 12 | 11 of 12 (91.7%, 95% CI 64.6-98.5%) | 0.917 ± "
-                    "0.359 | 1.000 ± 0.000 | 0.800 ± 0.000 | 1.600 ± 0.000 |"),
+  // The interval 0.558 to 1.275 of a rate is printed clipped to 1.
+  EXPECT_NE(md.find("| corridor_pc | 3 | 12 | 11 of 12 (91.7%, 95% CI 64.6-98.5%) | 0.917 "
+                    "[0.558, 1.000] | 1.000 [1.000, 1.000] | 0.800 [0.800, 0.800] | 1.600 "
+                    "[1.600, 1.600] |"),
+            std::string::npos)
+      << md;
+  EXPECT_NE(md.find("clipped to the values the metric can take: rates to [0, 1]"),
             std::string::npos)
       << md;
   EXPECT_NE(md.find("Fisher's exact test, two-sided"), std::string::npos) << md;
@@ -125,6 +130,10 @@ TEST(RunComparison, GroupsByExperimentWithIntervalsAcrossSeeds) {
   EXPECT_NEAR(std::stod(mono["mean"]), 5.0 / 12.0, 1e-12);
   EXPECT_NEAR(std::stod(mono["ci_low"]), 0.058112272520878194, 1e-10);
   EXPECT_NEAR(std::stod(mono["ci_high"]), 0.7752210608124552, 1e-10);
+  auto pc = csv_row(csv, "mean", "corridor_pc", "task_success_rate");
+  EXPECT_NEAR(std::stod(pc["mean"]), 11.0 / 12.0, 1e-12);  // the mean is not clipped
+  EXPECT_NEAR(std::stod(pc["ci_low"]), 0.5581122725208781, 1e-10);
+  EXPECT_EQ(pc["ci_high"], "1");  // 1.275 clipped
   auto pooled = csv_row(csv, "pooled_success", "corridor_mono", "task_success");
   EXPECT_EQ(pooled["successes"], "5");
   EXPECT_NEAR(std::stod(pooled["ci_high"]), 0.6804886874504503, 1e-10);
@@ -201,11 +210,156 @@ TEST(RunComparison, GroupsBySweepAxesAndSettings) {
   EXPECT_EQ(c.groups[1].pooled_success.successes, 3);
   EXPECT_NEAR(c.differences[0].fisher_p, 1.0 / 39.0, 1e-12);  // 8 of 8 against 3 of 8
 
+  // A key only some runs have leaves the others "(unset)".
+  auto noted = runs;
+  noted[0].settings["note"] = "x";
   ComparisonOptions by_two;
-  by_two.group_by = {"experiment", "missing.key"};
-  const RunComparison unset = compare_runs(runs, by_two);
-  ASSERT_EQ(unset.groups.size(), 1u);
-  EXPECT_EQ(unset.groups[0].name, "experiment=corridor, missing.key=(unset)");
+  by_two.group_by = {"experiment", "note"};
+  const RunComparison unset = compare_runs(noted, by_two);
+  ASSERT_EQ(unset.groups.size(), 2u);
+  EXPECT_EQ(unset.groups[0].name, "experiment=corridor, note=x");
+  EXPECT_EQ(unset.groups[1].name, "experiment=corridor, note=(unset)");
+}
+
+// The error compare_runs throws, or "" when it throws none.
+std::string comparison_error(const std::vector<RunSummary>& runs,
+                             const std::vector<std::string>& group_by) {
+  ComparisonOptions options;
+  options.group_by = group_by;
+  try {
+    compare_runs(runs, options);
+  } catch (const ComparisonError& e) {
+    return e.what();
+  }
+  return "";
+}
+
+// A --by key no selected run has would put every run in one "(unset)" group,
+// averaging all of them as if they were seeds: refused, with a close key when
+// there is one.
+TEST(RunComparison, RefusesAGroupingKeyNoRunHas) {
+  TempDir dir;
+  ResultStore store(dir.file("r.sqlite"));
+  for (int seed : {0, 1}) {
+    RunSpec spec = corridor_run("corridor_pc", 3, 1.0);
+    spec.config = "seed: " + std::to_string(seed) + "\npolicy: {type: segmented_cnmp}\n";
+    testing::record_run(store, spec);
+  }
+  const auto runs = load_run_summaries(store, {});
+  EXPECT_EQ(comparison_error(runs, {"nosuch.key"}),
+            "--by 'nosuch.key': no selected run has this setting");
+  EXPECT_EQ(comparison_error(runs, {"experiment", "policy.typ"}),
+            "--by 'policy.typ': no selected run has this setting (did you mean 'policy.type'?)");
+  EXPECT_EQ(comparison_error(runs, {"type"}),
+            "--by 'type': no selected run has this setting (did you mean 'policy.type'?)");
+  EXPECT_EQ(comparison_error(runs, {"policy.type", "experiment"}), "");
+}
+
+RunSummary summary_of(int64_t id, const std::string& experiment,
+                      const std::map<std::string, std::string>& axes, double success) {
+  RunSummary run;
+  run.id = id;
+  run.experiment = experiment;
+  run.axes = axes;
+  run.settings = axes;  // an axis is a config key
+  run.settings["evaluation.trials"] = "4";
+  run.trials = 4;
+  run.successes = static_cast<int>(4 * success);
+  run.metrics = {{"task_success_rate", success}};
+  run.metric_order = {"task_success_rate"};
+  return run;
+}
+
+// Intervals are clipped to the values a metric can take (rates [0, 1],
+// errors from 0, differences of rates [-1, 1]); other metrics and the means
+// are not.
+TEST(RunComparison, ClipsIntervalsToTheValuesAMetricCanTake) {
+  std::vector<RunSummary> runs = {
+      summary_of(1, "a", {{"seed", "0"}}, 1.0), summary_of(2, "a", {{"seed", "1"}}, 0.25),
+      summary_of(3, "b", {{"seed", "0"}}, 0.0), summary_of(4, "b", {{"seed", "1"}}, 0.75)};
+  const std::vector<std::pair<double, double>> values = {{0.1, -1.0}, {3.0, 1.0}};
+  for (size_t i = 0; i < runs.size(); ++i) {
+    runs[i].metrics["cor_mp_error_mean_cm"] = values[i % 2].first;
+    runs[i].metrics["offset_x"] = values[i % 2].second;
+    runs[i].metric_order.push_back("cor_mp_error_mean_cm");
+  }
+  ComparisonOptions options;
+  options.extra_metrics = {"offset_x"};
+  const RunComparison c = compare_runs(runs, options);
+  EXPECT_NEAR(c.groups[0].metrics.at("task_success_rate").low, -4.139826776075, 1e-9);
+
+  const std::string csv = comparison_csv(c);
+  auto success = csv_row(csv, "mean", "a", "task_success_rate");
+  EXPECT_EQ(success["mean"], "0.625");
+  EXPECT_EQ(success["ci_low"], "0");
+  EXPECT_EQ(success["ci_high"], "1");
+  auto error = csv_row(csv, "mean", "a", "cor_mp_error_mean_cm");
+  EXPECT_EQ(error["ci_low"], "0");  // -16.87 clipped
+  EXPECT_NEAR(std::stod(error["ci_high"]), 19.97399686749, 1e-9);
+  auto offset = csv_row(csv, "mean", "a", "offset_x");
+  EXPECT_NEAR(std::stod(offset["ci_low"]), -12.7062047362, 1e-8);  // unbounded: as computed
+  auto difference = csv_row(csv, "difference", "a", "task_success_rate");
+  EXPECT_EQ(difference["mean"], "0.25");
+  EXPECT_EQ(difference["ci_low"], "-1");
+  EXPECT_EQ(difference["ci_high"], "1");
+
+  const std::string md = comparison_markdown(c);
+  EXPECT_NE(md.find("| a | 2 | 8 | 5 of 8 (62.5%, 95% CI 30.6-86.3%) | 0.625 [0.000, 1.000] | "
+                    "1.550 [0.000, 19.974] | 0.000 [-12.706, 12.706] |"),
+            std::string::npos)
+      << md;
+  EXPECT_NE(md.find("| +0.250 [-1.000, 1.000] |"), std::string::npos) << md;
+  EXPECT_NE(md.find("Welch t interval clipped to [-1, 1]"), std::string::npos) << md;
+}
+
+// Groups that pool more than seeds are named, with what they pool; the
+// numbers stay those of the pooled runs.
+TEST(RunComparison, NamesGroupsThatPoolMoreThanSeeds) {
+  const std::vector<RunSummary> runs = {
+      summary_of(1, "corridor_pc", {{"seed", "0"}, {"policy.training.updates", "100"}}, 1.0),
+      summary_of(2, "corridor_pc", {{"seed", "1"}, {"policy.training.updates", "200"}}, 0.5),
+      summary_of(3, "corridor_ae", {{"seed", "0"}, {"policy.training.updates", "100"}}, 0.75),
+      summary_of(4, "corridor_ae", {{"seed", "1"}, {"policy.training.updates", "100"}}, 0.25)};
+
+  // By experiment: corridor_pc's runs differ in the updates, corridor_ae's
+  // only in the seed.
+  const RunComparison by_experiment = compare_runs(runs, {});
+  EXPECT_EQ(by_experiment.groups[0].experiments, std::vector<std::string>{"corridor_pc"});
+  EXPECT_EQ(by_experiment.groups[0].differing, std::vector<std::string>{"policy.training.updates"});
+  EXPECT_TRUE(by_experiment.groups[1].differing.empty());
+  EXPECT_EQ(pooling_notes(by_experiment),
+            std::vector<std::string>{
+                "group corridor_pc pools runs that differ in policy.training.updates"});
+  EXPECT_NEAR(by_experiment.groups[0].metrics.at("task_success_rate").mean, 0.75, 1e-12);
+  const std::string md = comparison_markdown(by_experiment);
+  EXPECT_NE(md.find("\n- group corridor_pc pools runs that differ in policy.training.updates\n"),
+            std::string::npos)
+      << md;
+
+  // By the updates: the group at 100 pools both experiments; the one at 200
+  // holds a single run.
+  ComparisonOptions by_updates;
+  by_updates.group_by = {"policy.training.updates"};
+  const RunComparison pooled = compare_runs(runs, by_updates);
+  ASSERT_EQ(pooled.groups.size(), 2u);
+  EXPECT_EQ(pooled.groups[0].runs, (std::vector<int64_t>{1, 3, 4}));
+  EXPECT_NEAR(pooled.groups[0].metrics.at("task_success_rate").mean, 2.0 / 3.0, 1e-12);
+  EXPECT_EQ(pooling_notes(pooled),
+            std::vector<std::string>{"group policy.training.updates=100 pools experiments "
+                                     "corridor_pc, corridor_ae"});
+
+  // Both at once; and nothing to say when the groups differ only in seeds.
+  auto mixed = runs;
+  mixed[3].settings["evaluation.trials"] = "8";
+  EXPECT_EQ(pooling_notes(compare_runs(mixed, by_updates)),
+            std::vector<std::string>{"group policy.training.updates=100 pools experiments "
+                                     "corridor_pc, corridor_ae and runs that differ in "
+                                     "evaluation.trials"});
+  ComparisonOptions by_both;
+  by_both.group_by = {"experiment", "policy.training.updates"};
+  const RunComparison seeds_only = compare_runs(runs, by_both);
+  EXPECT_TRUE(pooling_notes(seeds_only).empty());
+  EXPECT_EQ(comparison_markdown(seeds_only).find("pools"), std::string::npos);
 }
 
 TEST(RunComparison, RefusesNoRunsAndAnUnknownBaseline) {

@@ -116,6 +116,18 @@ TEST(RunReport, TabulatesRunsWithTheSettingsTheyVary) {
   const auto with_failed = load_run_summaries(store, query);
   ASSERT_EQ(with_failed.size(), 3u);
   EXPECT_EQ(with_failed[2].status, "failed");
+  // With --all the Markdown shows each run's status; by default it has none.
+  EXPECT_EQ(markdown.find("status"), std::string::npos) << markdown;
+  ReportFormat with_status;
+  with_status.status_column = true;
+  const std::string all = report_markdown(with_failed, with_status);
+  EXPECT_NE(all.find("| run | experiment | status | varies | task success | decision match |"),
+            std::string::npos)
+      << all;
+  EXPECT_NE(all.find("\n|---|---|---|---|---|---|---|\n"), std::string::npos) << all;
+  EXPECT_NE(all.find("\n| 1 | sweep | completed | "), std::string::npos) << all;
+  EXPECT_NE(all.find("\n| " + std::to_string(failed) + " | sweep | failed | "), std::string::npos)
+      << all;
   query.last = 1;
   const auto newest = load_run_summaries(store, query);
   ASSERT_EQ(newest.size(), 1u);
@@ -145,6 +157,11 @@ TEST(RunReport, AppendsThePapersRows) {
   EXPECT_NE(markdown.find("| | paper: mono | | 17 of 25 | 100% | 1.30 / 1.92 | 5.75 / 7.24 |"),
             std::string::npos)
       << markdown;
+  format.status_column = true;  // the paper's rows leave the status empty
+  const std::string with_status = report_markdown(load_run_summaries(store, {}), format);
+  EXPECT_NE(with_status.find("| | paper: pc | | | 24 of 25 | 100% | 0.80 / 1.45 | 1.69 / 3.19 |"),
+            std::string::npos)
+      << with_status;
 }
 
 struct ToolOutcome {
@@ -174,6 +191,27 @@ TEST(ReportTool, PrintsTheRunsOrSaysWhatIsWrongInOneLine) {
   EXPECT_EQ(ok.exit_code, 0) << ok.err;
   EXPECT_NE(ok.out.find("\n1,corridor_mono,completed,,4,0.5,0.75,0.3,0.6\n"), std::string::npos)
       << ok.out;
+
+  // --all: an interrupted run beside the completed one, its status shown in
+  // Markdown as in CSV; without --all the table has no status column.
+  {
+    ResultStore store(dir.file("r.sqlite"));
+    const int64_t id =
+        store.begin_run({"corridor_mono", "seed: 1\n", "hash", 0, "", false, "", "", 0, ""});
+    store.end_run(id, "interrupted", "killed");
+  }
+  const ToolOutcome all = run_report_tool(dir, "--db " + dir.file("r.sqlite") + " --all");
+  EXPECT_EQ(all.exit_code, 0) << all.err;
+  EXPECT_NE(all.out.find("\n| 1 | corridor_mono | completed | seed=0 | 2 of 4 |"),
+            std::string::npos)
+      << all.out;
+  EXPECT_NE(all.out.find("\n| 2 | corridor_mono | interrupted | seed=1 | - |"), std::string::npos)
+      << all.out;
+  const ToolOutcome completed = run_report_tool(dir, "--db " + dir.file("r.sqlite"));
+  EXPECT_EQ(completed.exit_code, 0) << completed.err;
+  EXPECT_EQ(completed.out.find("status"), std::string::npos) << completed.out;
+  EXPECT_NE(completed.out.find("\n| 1 | corridor_mono |  | 2 of 4 |"), std::string::npos)
+      << completed.out;
 
   const ToolOutcome missing = run_report_tool(dir, "--db " + dir.file("none.sqlite"));
   EXPECT_EQ(missing.exit_code, 2);
