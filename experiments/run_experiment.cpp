@@ -18,6 +18,7 @@
 #include "command_line.hpp"
 
 #include "core/config/config_error.hpp"
+#include "core/config/config_loader.hpp"
 #include "core/interrupt.hpp"
 #include "core/logging.hpp"
 #include "core/thread_budget.hpp"
@@ -58,8 +59,8 @@ int merge_command(const std::vector<std::string>& shards, const std::string& db_
   return 0;
 }
 
-// load_experiment for a run without -m: an override that looks like a sweep axis (a,b,
-// range(), choice()) and fails says that -m makes it one.
+// load_experiment for a run without -m: an error about an override that looks like a sweep
+// axis (a,b, range(), choice()) says that -m makes it one.
 corrmp::Experiment load_single_run(const std::string& config_path,
                                    const std::vector<std::string>& overrides,
                                    const corrmp::Registries& registries) {
@@ -67,7 +68,8 @@ corrmp::Experiment load_single_run(const std::string& config_path,
     return corrmp::load_experiment(config_path, overrides, registries);
   } catch (const corrmp::ConfigError& e) {
     for (const auto& assignment : overrides) {
-      if (corrmp::is_sweep_assignment(assignment)) {
+      if (corrmp::is_sweep_assignment(assignment) &&
+          e.where().file == corrmp::override_location(assignment).file) {
         throw corrmp::ConfigError(std::string(e.what()) + " (to sweep over '" + assignment +
                                   "', add -m)");
       }

@@ -27,7 +27,7 @@ double clipped(double value, const ValueRange& range) {
 ValueRange metric_range(const std::string& metric) {
   const std::set<std::string> words = words_of(metric);
   if (words.count("rate")) return {0.0, 1.0};
-  for (const char* word : {"error", "distance", "time", "seconds", "duration", "expected",
+  for (const char* word : {"error", "mse", "distance", "time", "seconds", "duration", "expected",
                            "failures", "demonstrations", "parameters"}) {
     if (words.count(word)) return {0.0, std::numeric_limits<double>::infinity()};
   }

@@ -17,9 +17,9 @@ struct ValueRange {
 
 // By the metric's name, split into words at '_': a rate (the word "rate":
 // task_success_rate, decision_match_rate_push, context_found_rate) lies in
-// [0, 1]; an error, distance, time or count (the words error, distance, time,
-// seconds, duration, expected, failures, demonstrations, parameters) is at
-// least 0; any other metric is unbounded.
+// [0, 1]; an error, distance, time or count (the words error, mse, distance,
+// time, seconds, duration, expected, failures, demonstrations, parameters) is
+// at least 0; any other metric is unbounded.
 ValueRange metric_range(const std::string& metric);
 
 // The values of a difference of two values in `range`: [min - max, max - min]

@@ -38,14 +38,17 @@ void check_shard(const std::string& shard) {
   }
   sqlite3* db = nullptr;
   int code = sqlite3_open_v2(shard.c_str(), &db, SQLITE_OPEN_READONLY, nullptr);
-  bool has_runs = false;
+  int64_t version = 0, tables = 0;
+  // One row: the schema version and how many of the tables every version has are there.
+  const char* query_text =
+      "SELECT (SELECT user_version FROM pragma_user_version), (SELECT count(*) FROM "
+      "sqlite_master WHERE type = 'table' AND name IN ('runs', 'trials', 'metrics'))";
   if (code == SQLITE_OK) {
     sqlite3_stmt* query = nullptr;
-    code = sqlite3_prepare_v2(
-        db, "SELECT count(*) FROM sqlite_master WHERE type = 'table' AND name = 'runs'", -1, &query,
-        nullptr);
+    code = sqlite3_prepare_v2(db, query_text, -1, &query, nullptr);
     if (code == SQLITE_OK && (code = sqlite3_step(query)) == SQLITE_ROW) {
-      has_runs = sqlite3_column_int(query, 0) > 0;
+      version = sqlite3_column_int64(query, 0);
+      tables = sqlite3_column_int64(query, 1);
       code = SQLITE_OK;
     }
     sqlite3_finalize(query);
@@ -55,9 +58,14 @@ void check_shard(const std::string& shard) {
     throw StoreError(
         fmt::format("{}: not a result database to merge ({})", shard, sqlite3_errstr(code)));
   }
-  if (!has_runs) {
-    throw StoreError(
-        fmt::format("{}: not a result database to merge (it has no runs table)", shard));
+  if (tables < 3) {
+    throw StoreError(fmt::format(
+        "{}: not a result database to merge (it lacks the runs, trials or metrics table)", shard));
+  }
+  if (version > ResultStore::kSchemaVersion) {
+    throw StoreError(fmt::format(
+        "{}: written by a newer version of this program (schema {}, this one reads up to {})",
+        shard, version, ResultStore::kSchemaVersion));
   }
 }
 

@@ -22,8 +22,8 @@ struct MergeCounts {
 MergeCounts merge_shard(ResultStore& target, const std::string& shard);
 
 // Throws StoreError naming `shard` unless it is a result database that merge_shard can read
-// (a file holding the runs table); reads it only. Checking every shard first refuses a bad
-// one before anything is merged or the target is made.
+// (the runs, trials and metrics tables, a schema this program knows); changes nothing in it.
+// Checking every shard first refuses a bad one before anything is merged or the target made.
 void check_shard(const std::string& shard);
 
 }  // namespace corrmp

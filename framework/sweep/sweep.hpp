@@ -31,12 +31,19 @@ struct SweepJob {
   std::vector<std::pair<std::string, std::string>> axes;
 };
 
-// Where a sweep file set a config key (an axis or a fixed override), so that an error in
-// its value names that place rather than the command line.
+// Where a sweep file set a config key, so that an error in its value names that place rather
+// than the command line.
 struct SweepKeyOrigin {
   std::string key;       // the config key path it sets, e.g. policy.training.updates
   SourceLocation where;  // its place in the sweep file
-  std::string path;      // the sweep file's own path to it, e.g. sweep.axes.policy.training.updates
+  std::string
+      path;  // the file's own path to it: sweep.axes.<key>, sweep.zip.<key>, sweep.overrides
+};
+
+// The places of a sweep file's settings; not kept in the manifest.
+struct SweepFilePlaces {
+  std::vector<SweepKeyOrigin> overrides;  // its `overrides`, in order: the first of every job's
+  std::vector<SweepKeyOrigin> axes;       // its `axes` and `zip` axes (keys swept once each)
 };
 
 struct Sweep {
@@ -44,7 +51,7 @@ struct Sweep {
   std::string name;  // the sweep file's name, or the base config's experiment
   std::vector<SweepJob> jobs;
   SlurmResources slurm;
-  std::vector<SweepKeyOrigin> key_origins;  // a sweep file's; not kept in the manifest
+  SweepFilePlaces file_places;
 };
 
 }  // namespace corrmp

@@ -162,8 +162,8 @@ Sweep define_sweep(const std::string& config_path, const std::vector<std::string
       std::size_t i = 0;
       for (const auto& item : overrides->items()) {
         const std::string& text = read.overrides.at(i++);
-        const std::string key = text.substr(0, text.find('='));
-        sweep.key_origins.push_back({key, item.where(), "sweep.overrides: " + key});
+        sweep.file_places.overrides.push_back(
+            {text.substr(0, text.find('=')), item.where(), "sweep.overrides"});
       }
     }
     check_name(read.name, section.find("name")->where());
@@ -171,14 +171,14 @@ Sweep define_sweep(const std::string& config_path, const std::vector<std::string
     sweep.slurm = slurm.resources;
     if (const ConfigNode* axes = section.find("axes")) {
       for (auto& axis : read_axes(*axes, "sweep.axes")) {
-        sweep.key_origins.push_back({axis.key, axis.where, "sweep.axes." + axis.key});
+        sweep.file_places.axes.push_back({axis.key, axis.where, "sweep.axes." + axis.key});
         groups.push_back({std::move(axis)});
       }
     }
     if (const ConfigNode* zip = section.find("zip")) {
       AxisGroup group = read_axes(*zip, "sweep.zip");
       for (const auto& axis : group)
-        sweep.key_origins.push_back({axis.key, axis.where, "sweep.zip." + axis.key});
+        sweep.file_places.axes.push_back({axis.key, axis.where, "sweep.zip." + axis.key});
       if (!group.empty()) groups.push_back(std::move(group));
     }
   } else {

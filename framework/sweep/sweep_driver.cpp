@@ -7,6 +7,7 @@
 #include <algorithm>
 #include <filesystem>
 #include <fstream>
+#include <optional>
 
 #include "core/config/config_error.hpp"
 #include "core/config/config_loader.hpp"
@@ -29,16 +30,32 @@ std::string describe_axes(const SweepJob& job) {
   return text.empty() ? job.config_path : text;
 }
 
-// The sweep-file place of the override an error is about: the override's own key or one
-// inside its value. Only for errors located at an override, so a base config's own mistakes
-// keep their place.
-const SweepKeyOrigin* sweep_file_origin(const Sweep& sweep, const ConfigError& error) {
-  if (!is_override_location(error.where())) return nullptr;
-  const std::string& path = error.key_path();
-  for (const SweepKeyOrigin& origin : sweep.key_origins) {
-    if (path == origin.key || path.rfind(origin.key + ".", 0) == 0) return &origin;
+// An error about one of `job`'s overrides that a sweep file set, placed in that file: the
+// override is found by the place the config loader gave its values (its file part, whatever
+// the line of a value nested in it), then by its position (the file's fixed overrides come
+// first in every job, the axes last). Null for other errors.
+std::optional<ConfigError> in_sweep_file(const Sweep& sweep, const SweepJob& job,
+                                         const ConfigError& error, const std::string& context) {
+  const auto& overrides = job.overrides;
+  std::size_t i = 0;
+  while (i < overrides.size() && override_location(overrides[i]).file != error.where().file) ++i;
+  if (i == overrides.size()) return std::nullopt;
+  const SweepKeyOrigin* origin = nullptr;
+  if (i + job.axes.size() >= overrides.size()) {
+    const std::string key = overrides[i].substr(0, overrides[i].find('='));
+    for (const SweepKeyOrigin& axis : sweep.file_places.axes) {
+      if (axis.key == key) origin = &axis;
+    }
+  } else if (i < sweep.file_places.overrides.size()) {
+    origin = &sweep.file_places.overrides[i];
   }
-  return nullptr;
+  if (origin == nullptr) return std::nullopt;  // the command line's
+  // The key the error names when it is not the override's own (one nested in its value, or
+  // a misspelt part of its path).
+  std::string path = origin->path;
+  const std::string& key = error.key_path().empty() ? origin->key : error.key_path();
+  if (path == "sweep.overrides" || key != origin->key) path += ": " + key;
+  return ConfigError(origin->where, path, error.reason() + context);
 }
 
 // Writes the manifest, the array script and the folders its tasks write to.
@@ -118,9 +135,7 @@ void check_sweep_jobs(const Sweep& sweep, const Registries& registries) {
       load_experiment(job.config_path, job.overrides, registries);
     } catch (const ConfigError& e) {
       const std::string context = fmt::format(" (sweep job {}: {})", job.index, describe_axes(job));
-      if (const SweepKeyOrigin* origin = sweep_file_origin(sweep, e)) {
-        throw ConfigError(origin->where, origin->path, e.reason() + context);
-      }
+      if (auto placed = in_sweep_file(sweep, job, e, context)) throw *placed;
       throw ConfigError(e.what() + context);
     }
   }

@@ -94,6 +94,11 @@ TEST(SweepCommand, BadValuesOfASweepFileNameTheirPlaceInTheFile) {
        "bad.yaml:4:23: sweep.overrides: policy.network.widht: unknown key (did you mean 'width'?)"},
       {"  zip:\n    seed: [1, 2]\n    policy.training.updates: [100, -5]\n",
        "bad.yaml:6:30: sweep.zip.policy.training.updates: value -5 is out of range"},
+      // A misspelt part of the key, and a key inside the value: both named.
+      {"  axes:\n    policy.trainingg.updates: [100, 200]\n",
+       "bad.yaml:5:31: sweep.axes.policy.trainingg.updates: policy.trainingg: unknown key"},
+      {"  overrides: ['policy.network={widht: 4}']\n",
+       "bad.yaml:4:15: sweep.overrides: policy.network.widht: unknown key"},
   };
   for (const auto& [section, expected] : cases) {
     const std::string file = dir.write("bad.yaml", head + section);
@@ -104,6 +109,14 @@ TEST(SweepCommand, BadValuesOfASweepFileNameTheirPlaceInTheFile) {
     EXPECT_EQ(std::count(outcome.out.begin(), outcome.out.end(), '\n'), 1) << outcome.out;
     EXPECT_FALSE(std::filesystem::exists(dir.file("r.sqlite"))) << section;
   }
+  // A bad value given on the command line for a key the file also sets is the command line's.
+  const std::string fixed =
+      dir.write("fixed.yaml", head + "  overrides: [policy.training.updates=100]\n");
+  const Outcome override_given = run(dir, fixed + " policy.training.updates=-5");
+  EXPECT_EQ(override_given.exit_code, 2);
+  EXPECT_NE(override_given.out.find("command-line override 'policy.training.updates=-5'"),
+            std::string::npos)
+      << override_given.out;
   // The same key on the command line is the command line's.
   const Outcome command_line = run(dir, dir.file("tiny.yaml") + " -m policy.training.updatez=1,2");
   EXPECT_NE(command_line.out.find("command-line override 'policy.training.updatez=1'"),
@@ -212,7 +225,15 @@ TEST(SweepCommand, CtrlCStopsTheJobsAndCountsTheOnesNeverStarted) {
   ASSERT_EQ(running, 2);
   ::kill(driver, SIGINT);
   int status = 0;
-  ::waitpid(driver, &status, 0);
+  const auto stop_deadline = std::chrono::steady_clock::now() + std::chrono::seconds(60);
+  while (::waitpid(driver, &status, WNOHANG) == 0) {
+    if (std::chrono::steady_clock::now() > stop_deadline) {
+      ::kill(driver, SIGKILL);
+      ::waitpid(driver, &status, 0);
+      FAIL() << "the sweep did not stop within 60 s of Ctrl-C";
+    }
+    std::this_thread::sleep_for(std::chrono::milliseconds(50));
+  }
   const std::string out = read_text(log);
   EXPECT_EQ(WIFEXITED(status) ? WEXITSTATUS(status) : -1, 130) << out;
   EXPECT_NE(out.find("0 completed, 0 failed, 2 interrupted, 3 not started"), std::string::npos)

@@ -144,10 +144,8 @@ std::size_t count_nodes(const ConfigNode& node) {
   return count;
 }
 
-constexpr const char* kOverridePlace = "command-line override '";
-
 void apply_override(ConfigNode& root, const std::string& assignment, ConfigBudget& budget) {
-  const SourceLocation where{kOverridePlace + shown_override(assignment) + "'", 0, 0};
+  const SourceLocation where = override_location(assignment);
   if (assignment.size() > kMaxConfigFileBytes) {
     throw ConfigError(
         where, "",
@@ -216,8 +214,8 @@ ConfigNode load_config_file(const std::string& path) {
   return load_with_includes(fs::path(path), nullptr, stack, budget);
 }
 
-bool is_override_location(const SourceLocation& where) {
-  return where.line == 0 && where.file.rfind(kOverridePlace, 0) == 0;
+SourceLocation override_location(const std::string& assignment) {
+  return {"command-line override '" + shown_override(assignment) + "'", 0, 0};
 }
 
 void apply_override(ConfigNode& root, const std::string& assignment) {

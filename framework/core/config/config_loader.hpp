@@ -22,9 +22,9 @@ ConfigNode load_config_file(const std::string& path);
 // typed reader then rejects any the schema does not declare, naming the override.
 // Sequence elements are addressed by index (segments.1.context=...).
 void apply_override(ConfigNode& root, const std::string& assignment);
-// Whether `where` is the place apply_override gives the values it sets ("command-line
-// override 'key=value'"), which errors about those values name.
-bool is_override_location(const SourceLocation& where);
+// The place apply_override gives the values of `assignment` ("command-line override
+// 'key=value'"): errors about them name its file, whatever their line.
+SourceLocation override_location(const std::string& assignment);
 
 // load_config_file followed by each override in order.
 ConfigNode load_config(const std::string& path, const std::vector<std::string>& overrides);
