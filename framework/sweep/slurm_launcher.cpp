@@ -8,22 +8,10 @@
 #include <stdexcept>
 
 #include "sweep/run_command.hpp"
+#include "sweep/shell_words.hpp"
 
 namespace corrmp {
 namespace {
-
-// A word bash takes literally: single quotes, each ' written as '\''.
-std::string shell_quoted(const std::string& text) {
-  std::string quoted = "'";
-  for (const char c : text) {
-    if (c == '\'') {
-      quoted += "'\\''";
-    } else {
-      quoted += c;
-    }
-  }
-  return quoted + "'";
-}
 
 // A file name pattern on an #SBATCH line: sbatch reads a double-quoted argument with
 // \" and \\ escapes, then Slurm expands %-patterns (a literal % is %%) and expands

@@ -14,6 +14,7 @@
 #include "experiment/experiment.hpp"
 #include "store/store_merge.hpp"
 #include "sweep/local_sweep.hpp"
+#include "sweep/shell_words.hpp"
 #include "sweep/slurm_launcher.hpp"
 #include "sweep/sweep_manifest.hpp"
 #include "sweep/sweep_records.hpp"
@@ -161,7 +162,7 @@ int drive_sweep(const Sweep& sweep, const SweepDriverOptions& options) {
       outcome.skipped, options.run.db_path, sweep.id, outcome.directory);
   if (outcome.interrupted > 0 || outcome.not_started > 0) {
     fmt::print("resume with: run_experiment --resume {} --db {} --out {}{}{}\n", sweep.id,
-               options.run.db_path, options.run.out_dir,
+               shell_word(options.run.db_path), shell_word(options.run.out_dir),
                local.parallel_jobs > 1 ? fmt::format(" -j {}", local.parallel_jobs) : "",
                local.use_cache ? "" : " --no-cache");
     return 130;
