@@ -1,11 +1,27 @@
 // Recorded demonstrations from files, split into training and validation.
 #include "cnmp/trajectory_files.hpp"
 
-#include <cmath>
+#include <fmt/format.h>
 
+#include <cmath>
+#include <filesystem>
+
+#include "core/config/config_error.hpp"
 #include "core/json_writer.hpp"
 
 namespace corrmp {
+
+void check_trajectory_paths(const TrajectoryFilesParams& params) {
+  namespace fs = std::filesystem;
+  for (const auto& path : params.paths) {
+    std::error_code error;
+    if (fs::exists(path, error)) continue;
+    throw ConfigError(fmt::format(
+        "demonstrations.paths: '{}' does not exist (relative paths are taken from the folder "
+        "the program runs in, {})",
+        path, fs::current_path().string()));
+  }
+}
 
 DemonstrationSplit TrajectoryFiles::collect(Environment*, Rng& rng) {
   const auto raw = read_trajectory_files(params_.paths);

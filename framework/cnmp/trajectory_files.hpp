@@ -34,6 +34,11 @@ struct TrajectoryFilesParams {
   }
 };
 
+/// Throws ConfigError naming the first of `params.paths` that does not exist, so that a run
+/// is refused (exit 2, nothing recorded) before it starts; the files' contents are checked
+/// when they are read. Relative paths are taken from the current folder.
+void check_trajectory_paths(const TrajectoryFilesParams& params);
+
 class TrajectoryFiles : public DemonstrationSource {
  public:
   explicit TrajectoryFiles(const TrajectoryFilesParams& params) : params_(params) {}

@@ -3,11 +3,15 @@
 
 #include <fmt/format.h>
 #include <spdlog/spdlog.h>
+#include <unistd.h>
 
+#include <cerrno>
+#include <cstring>
 #include <filesystem>
 #include <fstream>
 #include <optional>
 
+#include "core/config/config_error.hpp"
 #include "core/file_lock.hpp"
 #include "core/interrupt.hpp"
 #include "core/json_writer.hpp"
@@ -183,6 +187,21 @@ void run_stages(Experiment& experiment, const fs::path& dir, const RunOptions& o
   }
 }
 
+// The folder a run's outputs go in must be a folder this process can write: otherwise the
+// run is refused (ConfigError, exit 2) before it is recorded, like a bad config.
+void check_output_folder(const fs::path& folder) {
+  std::error_code error;
+  fs::create_directories(folder, error);
+  if (error || !fs::is_directory(folder)) {
+    throw ConfigError(fmt::format("--out: cannot make the output folder {}: {}", folder.string(),
+                                  error ? error.message() : "a file is in the way"));
+  }
+  if (::access(folder.c_str(), W_OK | X_OK) != 0) {
+    throw ConfigError(fmt::format("--out: cannot write in the output folder {}: {}",
+                                  folder.string(), std::strerror(errno)));
+  }
+}
+
 }  // namespace
 
 RunResult run_pipeline(Experiment& experiment, const RunOptions& options) {
@@ -191,6 +210,7 @@ RunResult run_pipeline(Experiment& experiment, const RunOptions& options) {
     spdlog::warn("{}: marked {} run(s) left 'running' by ended processes as interrupted",
                  options.db_path, stale);
   }
+  check_output_folder(fs::path(options.out_dir) / experiment.config.experiment.name);
   const GitState git = source_git_state();
   RunResult result;
   result.status = "running";

@@ -121,3 +121,46 @@ TEST(DamagedFilesTools, ADirectoryInPlaceOfTheDemonstrationCacheIsNeverFatal) {
 
 }  // namespace
 }  // namespace corrmp
+
+namespace corrmp {
+namespace {
+
+// Refused before a run is recorded: exit 2, one line, no run in the database.
+void expect_no_run(const TempDir& dir, const Outcome& outcome, const std::string& message) {
+  EXPECT_EQ(outcome.exit_code, 2) << outcome.err;
+  EXPECT_EQ(lines(outcome.err), 1) << outcome.err;
+  EXPECT_NE(outcome.err.find(message), std::string::npos) << outcome.err;
+  if (fs::exists(dir.file("r.sqlite"))) {
+    ResultStore store(dir.file("r.sqlite"));
+    EXPECT_EQ(store.query_int("SELECT count(*) FROM runs"), 0);
+  }
+}
+
+TEST(DamagedFilesTools, AnOutputFolderThatCannotBeMadeIsRefusedBeforeARunIsRecorded) {
+  TempDir dir;
+  const std::string config = dir.write("tiny.yaml", kTiny);
+  const std::string file = dir.write("afile", "in the way\n");
+  const Outcome outcome =
+      testing::run_tool(dir, std::string(RUN_EXPERIMENT_BIN) + " " + config + " --db " +
+                                 dir.file("r.sqlite") + " --out " + file);
+  expect_no_run(dir, outcome, "--out: cannot make the output folder " + file + "/tiny");
+  EXPECT_EQ(bytes_of(file), "in the way\n");
+}
+
+TEST(DamagedFilesTools, MissingDemonstrationFilesAreRefusedBeforeARunIsRecorded) {
+  TempDir dir;
+  const std::string config =
+      dir.write("files.yaml",
+                "experiment: {name: files}\nseed: 3\ndemonstrations: {type: trajectory_files, "
+                "paths: [" +
+                    dir.file("no-such-recordings") +
+                    "], output_columns: [x]}\npolicy:\n  type: segmented_cnmp\n  network: "
+                    "{width: 8}\n  training: {updates: 50, validate_every: 50}\n");
+  const Outcome outcome = run_experiment(dir, config);
+  expect_no_run(dir, outcome,
+                "demonstrations.paths: '" + dir.file("no-such-recordings") + "' does not exist");
+  EXPECT_FALSE(fs::exists(dir.file("runs")));
+}
+
+}  // namespace
+}  // namespace corrmp
