@@ -13,11 +13,14 @@
 // --plot-success, task success against a setting with 95% intervals.
 #include <CLI/CLI.hpp>
 
+#include <algorithm>
 #include <filesystem>
 #include <fstream>
 #include <iostream>
+#include <set>
 
 #include "command_line.hpp"
+#include "core/config/did_you_mean.hpp"
 #include "experiment/paper_report.hpp"
 #include "experiment/reproduction_figures.hpp"
 #include "experiment/run_comparison.hpp"
@@ -64,6 +67,24 @@ std::string missing_selection(const corrmp::ReportQuery& query,
     const bool found =
         std::any_of(runs.begin(), runs.end(), [&](const auto& run) { return run.id == id; });
     if (!found) return "run " + std::to_string(id) + " is not among the selected runs";
+  }
+  return "";
+}
+
+// "--metric 'NAME': ..." for the first extra metric no selected run recorded (a typo would
+// otherwise add a column of '-'); empty when every one is recorded by some run.
+std::string unrecorded_metric(const std::vector<corrmp::RunSummary>& runs,
+                              const std::vector<std::string>& metrics) {
+  for (const auto& metric : metrics) {
+    const bool recorded = std::any_of(
+        runs.begin(), runs.end(), [&](const auto& run) { return run.metrics.count(metric) > 0; });
+    if (recorded) continue;
+    std::set<std::string> names;
+    for (const auto& run : runs) {
+      for (const auto& entry : run.metrics) names.insert(entry.first);
+    }
+    return "--metric '" + metric + "': no selected run recorded it" +
+           corrmp::did_you_mean(metric, std::vector<std::string>(names.begin(), names.end()));
   }
   return "";
 }
@@ -115,6 +136,7 @@ int main(int argc, char** argv) {
   if (!compare && (!comparison.group_by.empty() || !comparison.baseline.empty())) {
     return usage_error("--by and --baseline need --compare");
   }
+  if (csv && paper) return usage_error("--paper's rows are Markdown only: drop --csv or --paper");
   if ((compare || reproduction) && paper) {
     return usage_error("--paper is for the run table; --compare and --reproduction have their own");
   }
@@ -148,6 +170,10 @@ int main(int argc, char** argv) {
       return 1;
     }
 
+    if (const std::string unknown = unrecorded_metric(runs, format.extra_metrics);
+        !unknown.empty()) {
+      return usage_error(unknown);
+    }
     if (!plot_success.empty()) {
       const auto data = corrmp::success_by_parameter(runs, plot_success);
       if (data.series.empty()) {

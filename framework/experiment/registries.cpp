@@ -23,7 +23,10 @@ namespace {
 
 template <class Base>
 std::string describe_registry(const std::string& section, const Registry<Base>& registry) {
-  std::string out = fmt::format("{} ({}s):\n", section, registry.kind());
+  const std::string& kind = registry.kind();
+  const std::string plural =
+      !kind.empty() && kind.back() == 'y' ? kind.substr(0, kind.size() - 1) + "ies" : kind + "s";
+  std::string out = fmt::format("{} ({}):\n", section, plural);
   if (registry.entries().empty()) return out + "  (none registered yet)\n";
   for (const auto& entry : registry.entries()) {
     out += fmt::format("  {:<22} {}\n", entry.name, entry.description);

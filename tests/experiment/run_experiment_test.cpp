@@ -171,6 +171,9 @@ TEST(RunExperiment, ListShowsRegistriesWithDescriptionsAndParameters) {
   EXPECT_NE(outcome.out.find("time_steps"), std::string::npos) << outcome.out;
   EXPECT_NE(outcome.out.find("segmented_cnmp"), std::string::npos) << outcome.out;
   EXPECT_NE(outcome.out.find("training.updates"), std::string::npos) << outcome.out;
+  EXPECT_NE(outcome.out.find("\npolicy (policies):\n"), std::string::npos) << outcome.out;
+  EXPECT_NE(outcome.out.find("\ncontext (context extractors):\n"), std::string::npos)
+      << outcome.out;
 }
 
 TEST(RunExperiment, ARunIsRecordedWithItsDirectoryAndIsDeterministic) {

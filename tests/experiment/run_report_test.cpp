@@ -227,6 +227,21 @@ TEST(ReportTool, PrintsTheRunsOrSaysWhatIsWrongInOneLine) {
   const ToolOutcome bad = run_report_tool(dir, "--db " + dir.file("r.sqlite") + " --last 0");
   EXPECT_EQ(bad.exit_code, 2);
   EXPECT_EQ(std::count(bad.err.begin(), bad.err.end(), '\n'), 1) << bad.err;
+  // A metric no run recorded (a typo) is refused, not a column of '-'; --paper is Markdown.
+  const ToolOutcome typo =
+      run_report_tool(dir, "--db " + dir.file("r.sqlite") + " --metric task_succes_rate");
+  EXPECT_EQ(typo.exit_code, 2);
+  EXPECT_EQ(typo.err,
+            "report: --metric 'task_succes_rate': no selected run recorded it (did you mean "
+            "'task_success_rate'?)\n");
+  const ToolOutcome known =
+      run_report_tool(dir, "--db " + dir.file("r.sqlite") + " --metric task_success_rate");
+  EXPECT_EQ(known.exit_code, 0) << known.err;
+  const ToolOutcome csv_paper =
+      run_report_tool(dir, "--db " + dir.file("r.sqlite") + " --csv --paper");
+  EXPECT_EQ(csv_paper.exit_code, 2);
+  EXPECT_NE(csv_paper.err.find("--paper's rows are Markdown only"), std::string::npos)
+      << csv_paper.err;
 }
 
 }  // namespace
