@@ -42,4 +42,8 @@ IntervalBounds clip_interval(double low, double high, const ValueRange& range) {
   return {clipped(low, range), clipped(high, range)};
 }
 
+IntervalBounds metric_interval(const std::string& metric, const MeanInterval& m) {
+  return clip_interval(m.low, m.high, metric_range(metric));
+}
+
 }  // namespace corrmp

@@ -8,6 +8,8 @@
 #include <limits>
 #include <string>
 
+#include "stats/mean_interval.hpp"
+
 namespace corrmp {
 
 struct ValueRange {
@@ -32,5 +34,9 @@ struct IntervalBounds {
 
 // [low, high] clipped into `range`; a NaN bound (no interval) stays NaN.
 IntervalBounds clip_interval(double low, double high, const ValueRange& range);
+
+// The 95% interval of `m`, a mean of `metric` across runs, clipped to the metric's range
+// (the one form every report prints).
+IntervalBounds metric_interval(const std::string& metric, const MeanInterval& m);
 
 }  // namespace corrmp

@@ -86,7 +86,7 @@ Cell metric_cell(const std::string& table, const std::string& row, const std::st
                  bool higher_is_better) {
   const MeanInterval m = mean_interval(samples(runs, metric));
   Cell cell{table, row, group, metric, m.count, m.mean, m.low, m.high, "", "", ""};
-  const IntervalBounds clipped = clip_interval(m.low, m.high, metric_range(metric));
+  const IntervalBounds clipped = metric_interval(metric, m);
   cell.low = clipped.low;
   cell.high = clipped.high;
   cell.ours = interval_text(m, cell.low, cell.high, percent, runs.size());

@@ -183,11 +183,6 @@ void add_paths(LinePanel& panel, const std::string& segment, const SegmentPath& 
 
 // ---- 2. success against a parameter --------------------------------------
 
-// A success rate's interval clipped to [0, 1]; NaN without one (one run).
-IntervalBounds success_bounds(const MeanInterval& m) {
-  return clip_interval(m.low, m.high, metric_range("task_success_rate"));
-}
-
 std::string group_of(const RunSummary& run, const std::string& key) {
   std::string group = key == "experiment" ? "" : run.experiment;
   for (const auto& [axis, value] : run.axes) {
@@ -491,7 +486,7 @@ void write_success_figure(const SuccessByParameter& data, const std::string& png
     IntervalSeries drawn{series.group.empty() ? "task success" : series.group, {}};
     for (const auto& point : series.points) {
       const MeanInterval& m = point.success;
-      const IntervalBounds bounds = success_bounds(m);
+      const IntervalBounds bounds = metric_interval("task_success_rate", m);
       drawn.points.push_back({point.x, 100.0 * m.mean, 100.0 * bounds.low, 100.0 * bounds.high});
     }
     chart.series.push_back(std::move(drawn));
@@ -504,7 +499,7 @@ std::string success_csv(const SuccessByParameter& data) {
   std::string out = "group,value,runs,mean,ci_low,ci_high\n";
   for (const auto& series : data.series) {
     for (const auto& p : series.points) {
-      const IntervalBounds bounds = success_bounds(p.success);
+      const IntervalBounds bounds = metric_interval("task_success_rate", p.success);
       out += fmt::format("{},{},{},{},{},{}\n", series.group, p.value, p.success.count,
                          number(p.success.mean), number(bounds.low), number(bounds.high));
     }

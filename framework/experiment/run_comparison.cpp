@@ -2,6 +2,7 @@
 #include "experiment/run_comparison.hpp"
 
 #include <fmt/format.h>
+#include <fmt/ranges.h>
 
 #include <algorithm>
 #include <cmath>
@@ -61,11 +62,6 @@ SuccessDifference success_difference(const RunGroup& group, const RunGroup& vers
   return d;
 }
 
-// A group's interval of `metric`, clipped to the values it can take.
-IntervalBounds metric_bounds(const std::string& metric, const MeanInterval& m) {
-  return clip_interval(m.low, m.high, metric_range(metric));
-}
-
 // The interval of a difference in task_success_rate, clipped to [-1, 1].
 IntervalBounds difference_bounds(const DifferenceInterval& d) {
   return clip_interval(d.low, d.high, difference_range(metric_range(kSuccess)));
@@ -87,12 +83,6 @@ std::string difference_text(const DifferenceInterval& d) {
 std::string pooled_short(const ProportionInterval& p) {
   if (p.trials == 0) return "no trials";
   return fmt::format("{} of {} ({:.1f}%)", p.successes, p.trials, 100 * p.rate);
-}
-
-std::string joined(const std::vector<std::string>& items) {
-  std::string text;
-  for (const auto& item : items) text += (text.empty() ? "" : ", ") + item;
-  return text;
 }
 
 std::string p_value_text(const SuccessDifference& d) {
@@ -185,9 +175,10 @@ std::vector<std::string> pooling_notes(const RunComparison& comparison) {
   std::vector<std::string> notes;
   for (const auto& group : comparison.groups) {
     std::vector<std::string> parts;
-    if (group.experiments.size() > 1) parts.push_back("experiments " + joined(group.experiments));
+    if (group.experiments.size() > 1)
+      parts.push_back(fmt::format("experiments {}", fmt::join(group.experiments, ", ")));
     if (!group.differing.empty()) {
-      parts.push_back("runs that differ in " + joined(group.differing));
+      parts.push_back(fmt::format("runs that differ in {}", fmt::join(group.differing, ", ")));
     }
     if (parts.empty()) continue;
     notes.push_back(fmt::format("group {} pools {}", group.name,
@@ -228,7 +219,7 @@ std::string comparison_markdown(const RunComparison& comparison) {
                        group.trials, pooled_success_text(group.pooled_success));
     for (const auto& metric : comparison.metrics) {
       const MeanInterval& m = group.metrics.at(metric);
-      const IntervalBounds bounds = metric_bounds(metric, m);
+      const IntervalBounds bounds = metric_interval(metric, m);
       std::string cell = mean_with_interval(m, bounds.low, bounds.high);
       if (m.count > 0 && static_cast<size_t>(m.count) != group.runs.size()) {
         cell += fmt::format(" (n={})", m.count);
@@ -278,7 +269,7 @@ std::string comparison_csv(const RunComparison& comparison) {
                        csv_number(p.rate), csv_number(p.low), csv_number(p.high));
     for (const auto& metric : comparison.metrics) {
       const MeanInterval& m = group.metrics.at(metric);
-      const IntervalBounds bounds = metric_bounds(metric, m);
+      const IntervalBounds bounds = metric_interval(metric, m);
       out += fmt::format("mean,{},,{},{},{},,{},{},{},,,\n", csv_cell(group.name), csv_cell(metric),
                          m.count, group.trials, csv_number(m.mean), csv_number(bounds.low),
                          csv_number(bounds.high));
