@@ -37,9 +37,8 @@ std::string sbatch_file_pattern(const std::string& dir, const std::string& name)
 
 // A resource value written as is on an #SBATCH line.
 const std::string& checked_resource(const std::string& value, const std::string& key) {
-  if (!is_slurm_value(value)) {
-    throw std::invalid_argument("slurm." + key + ": '" + value +
-                                "' is not a Slurm value (letters, digits and :-_.,+ only)");
+  if (const std::string problem = slurm_value_problem(value); !problem.empty()) {
+    throw std::invalid_argument("slurm." + key + ": " + problem);
   }
   return value;
 }
@@ -80,11 +79,13 @@ std::vector<int> selected_indices(const Sweep& sweep, const SlurmArraySelection&
 
 }  // namespace
 
-bool is_slurm_value(const std::string& value) {
-  return std::all_of(value.begin(), value.end(), [](char c) {
+std::string slurm_value_problem(const std::string& value) {
+  const bool plain = std::all_of(value.begin(), value.end(), [](char c) {
     return std::isalnum(static_cast<unsigned char>(c)) ||
            std::string(":-_.,+").find(c) != std::string::npos;
   });
+  if (plain) return "";
+  return "'" + value + "' is not a Slurm value (letters, digits and :-_.,+ only)";
 }
 
 std::string slurm_array_spec(std::vector<int> indices, int max_concurrent) {

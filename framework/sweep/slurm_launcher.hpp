@@ -36,9 +36,10 @@ struct SlurmArraySelection {
 std::string slurm_array_script(const Sweep& sweep, const SlurmPaths& paths,
                                const SlurmArraySelection& selection = {});
 
-// Whether a resource value (time, memory, partition) can go on an #SBATCH line as is:
-// letters, digits and :-_.,+ only, which Slurm's syntax for them needs.
-bool is_slurm_value(const std::string& value);
+// Why a resource value (time, memory, partition) cannot go on an #SBATCH line as is ("'1 hour'
+// is not a Slurm value (...)"): only letters, digits and :-_.,+ may, which Slurm's syntax for
+// them needs. Empty when it can.
+std::string slurm_value_problem(const std::string& value);
 
 // The array specification: sorted indices, consecutive runs as ranges ("0-3",
 // "1,3-4"), then "%<max_concurrent>" when limited.

@@ -55,10 +55,9 @@ void check_slurm_values(const ConfigNode& section, const SlurmResources& resourc
                                                                {"partition", &resources.partition}};
   for (const auto& [key, value] : values) {
     const ConfigNode* node = section.find(key);
-    if (node != nullptr && !is_slurm_value(*value)) {
-      throw ConfigError(
-          node->where(), std::string("sweep.slurm.") + key,
-          fmt::format("'{}' is not a Slurm value (letters, digits and :-_.,+ only)", *value));
+    if (node == nullptr) continue;
+    if (const std::string problem = slurm_value_problem(*value); !problem.empty()) {
+      throw ConfigError(node->where(), std::string("sweep.slurm.") + key, problem);
     }
   }
 }
