@@ -211,7 +211,7 @@ RunResult run_pipeline(Experiment& experiment, const RunOptions& options) {
                  options.db_path, stale);
   }
   check_output_folder(fs::path(options.out_dir) / experiment.config.experiment.name);
-  const GitState git = source_git_state();
+  const GitState git = build_git_state();
   RunResult result;
   result.status = "running";
   RunRecord record{experiment.config.experiment.name,
@@ -242,6 +242,9 @@ RunResult run_pipeline(Experiment& experiment, const RunOptions& options) {
     fs::create_directories(dir);
     store.set_out_dir(result.run_id, dir.string());
     add_log_file((dir / "log.txt").string());
+    if (const std::string changed = source_change_warning(git, source_git_state());
+        !changed.empty())
+      spdlog::warn("{}", changed);
     write_text(dir / "config.resolved.yaml", experiment.resolved_yaml);
     write_run_json(dir, experiment, result.run_id, git, started_at, result, "");
     spdlog::info("run {} of '{}' in {}", result.run_id, experiment.config.experiment.name,

@@ -42,6 +42,19 @@ GitState source_git_state() {
   return state;
 }
 
+std::string source_change_warning(const GitState& built, const GitState& now) {
+  if (built.commit == "unknown" || now.commit == "unknown") return "";
+  if (built.commit == now.commit && built.dirty == now.dirty) return "";
+  const auto describe = [](const GitState& state) {
+    return fmt::format("{}{}", state.commit.substr(0, 12),
+                       state.dirty ? " with uncommitted changes" : "");
+  };
+  return fmt::format(
+      "this binary was built from {}, but the source tree is now at {}; the run records the "
+      "binary's state (rebuild to run the code as it is now)",
+      describe(built), describe(now));
+}
+
 std::vector<std::pair<std::string, std::string>> library_versions() {
   return {
       {"eigen",
