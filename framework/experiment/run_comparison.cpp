@@ -8,6 +8,7 @@
 #include <cmath>
 
 #include "experiment/comparison_groups.hpp"
+#include "experiment/error_metrics.hpp"
 #include "experiment/metric_ranges.hpp"
 #include "experiment/report_text.hpp"
 #include "stats/fisher_exact.hpp"
@@ -32,12 +33,13 @@ std::vector<std::string> metric_columns(const std::vector<RunSummary>& runs,
     return run.metrics.count("decision_match_rate") > 0;
   });
   if (any_decision) add("decision_match_rate");
-  for (const auto& run : runs) {
-    for (const auto& name : run.metric_order) {
-      const bool error = name.find("_mp_error_mean_") != std::string::npos ||
-                         name.find("_mp_error_max_") != std::string::npos;
-      if (error) add(name);
-    }
+  const auto recorded = [&](const std::string& name) {
+    return std::any_of(runs.begin(), runs.end(),
+                       [&](const RunSummary& run) { return run.metrics.count(name) > 0; });
+  };
+  for (const auto& error : error_metrics(runs)) {
+    add(error.mean);
+    if (recorded(error.max)) add(error.max);
   }
   for (const auto& name : extras) add(name);
   return columns;

@@ -7,6 +7,7 @@
 #include <algorithm>
 #include <cmath>
 
+#include "experiment/error_metrics.hpp"
 #include "experiment/report_text.hpp"
 
 namespace corrmp {
@@ -32,36 +33,9 @@ std::string percent_text(const double* rate) {
   return rate ? fmt::format("{:.0f}%", 100 * *rate) : "-";
 }
 
-// A trajectory error the runs recorded: <segment>_mp_error_mean_<unit>.
-const std::string kErrorMarker = "_mp_error_mean_";
-struct ErrorColumn {
-  std::string segment, unit;
-  std::string mean() const { return segment + "_mp_error_mean_" + unit; }
-  std::string max() const { return segment + "_mp_error_max_" + unit; }
-  std::string heading() const { return fmt::format("{}-MP error mean / max ({})", segment, unit); }
-};
-
-// Every error the runs recorded, in the order the first run recording it did
-// (the task's order of segments).
-std::vector<ErrorColumn> error_columns(const std::vector<RunSummary>& runs) {
-  std::vector<ErrorColumn> columns;
-  for (const auto& run : runs) {
-    for (const auto& name : run.metric_order) {
-      const auto at = name.find(kErrorMarker);
-      if (at == std::string::npos || at == 0) continue;
-      ErrorColumn column{name.substr(0, at), name.substr(at + kErrorMarker.size())};
-      const bool known = std::any_of(columns.begin(), columns.end(), [&](const ErrorColumn& c) {
-        return c.mean() == column.mean();
-      });
-      if (!known) columns.push_back(column);
-    }
-  }
-  return columns;
-}
-
-std::string pair_text(const RunSummary& run, const ErrorColumn& column) {
-  const double* mean = metric(run, column.mean());
-  const double* max = metric(run, column.max());
+std::string pair_text(const RunSummary& run, const ErrorMetric& column) {
+  const double* mean = metric(run, column.mean);
+  const double* max = metric(run, column.max);
   if (!mean && !max) return "-";
   return number(mean) + " / " + number(max);
 }
@@ -119,16 +93,14 @@ std::string report_markdown(const std::vector<RunSummary>& runs, const ReportFor
   const auto varying = varying_settings(runs);
   std::vector<PaperRow> paper;
   if (!format.paper_tables.empty()) paper = paper_rows(format.paper_tables);
-  std::vector<ErrorColumn> errors = error_columns(runs);
+  std::vector<ErrorMetric> errors = error_metrics(runs);
   for (const auto& row : paper) {  // the paper's errors get their columns too
     for (const auto& [mean, text] : row.errors) {
-      const bool known =
-          std::any_of(errors.begin(), errors.end(),
-                      // A structured binding is captured through an
-                      // init-capture: C++17 (clang) allows no other way.
-                      [&key = mean](const ErrorColumn& c) { return c.mean() == key; });
-      const auto at = mean.find(kErrorMarker);
-      if (!known) errors.push_back({mean.substr(0, at), mean.substr(at + kErrorMarker.size())});
+      const bool known = std::any_of(errors.begin(), errors.end(),
+                                     // A structured binding is captured through an
+                                     // init-capture: C++17 (clang) allows no other way.
+                                     [&key = mean](const ErrorMetric& c) { return c.mean == key; });
+      if (const auto error = error_metric(mean); !known && error) errors.push_back(*error);
     }
   }
   std::string out = "| run | experiment |";
@@ -140,7 +112,7 @@ std::string report_markdown(const std::vector<RunSummary>& runs, const ReportFor
   out += " varies | task success | decision match |";
   rule += "---|---|---|";
   for (const auto& column : errors) {
-    out += " " + column.heading() + " |";
+    out += " " + column.heading + " |";
     rule += "---|";
   }
   for (const auto& name : format.extra_metrics) {
@@ -164,7 +136,7 @@ std::string report_markdown(const std::vector<RunSummary>& runs, const ReportFor
       out += fmt::format("| | {} |{} | {} | {} |", row.label, format.status_column ? " |" : "",
                          row.success, row.decision);
       for (const auto& column : errors) {
-        const auto cell = row.errors.find(column.mean());
+        const auto cell = row.errors.find(column.mean);
         out += " " + (cell == row.errors.end() ? std::string() : cell->second) + " |";
       }
       for (size_t i = 0; i < format.extra_metrics.size(); ++i) out += " |";
@@ -177,9 +149,9 @@ std::string report_markdown(const std::vector<RunSummary>& runs, const ReportFor
 std::string report_csv(const std::vector<RunSummary>& runs, const ReportFormat& format) {
   const auto varying = varying_settings(runs);
   std::vector<std::string> columns{"task_success_rate", "decision_match_rate"};
-  for (const auto& column : error_columns(runs)) {
-    columns.push_back(column.mean());
-    columns.push_back(column.max());
+  for (const auto& column : error_metrics(runs)) {
+    columns.push_back(column.mean);
+    columns.push_back(column.max);
   }
   columns.insert(columns.end(), format.extra_metrics.begin(), format.extra_metrics.end());
   std::string out = "run,experiment,status,varies,trials";

@@ -144,6 +144,26 @@ TEST(RunComparison, GroupsByExperimentWithIntervalsAcrossSeeds) {
   EXPECT_NEAR(std::stod(difference["ci_low"]), 0.5 - 0.3272071935795928, 1e-10);
 }
 
+// Runs with no environment (curves_demo) have no trials but record the held-out
+// demonstrations' errors: those are compared, small ones with three significant digits.
+TEST(RunComparison, ComparesTheHeldOutErrorsOfRunsWithoutAnEnvironment) {
+  TempDir dir;
+  ResultStore store(dir.file("r.sqlite"));
+  for (const double error : {0.004, 0.005, 0.006}) {
+    RunSpec spec;
+    spec.experiment = "curves_demo";
+    spec.metrics = {{"full_error_mean", error}, {"full_error_max", 4 * error}};
+    testing::record_run(store, spec);
+  }
+  const RunComparison c = compare_runs(load_run_summaries(store, {}), {});
+  EXPECT_EQ(c.metrics,
+            (std::vector<std::string>{"task_success_rate", "full_error_mean", "full_error_max"}));
+  const std::string md = comparison_markdown(c);
+  // 0.005 +- t(0.975, 2) 0.001 / sqrt(3) = 0.005 +- 0.00248
+  EXPECT_NE(md.find("| 0.005 [0.00252, 0.00748] | 0.02 [0.0101, 0.0299] |"), std::string::npos)
+      << md;
+}
+
 TEST(RunComparison, ComparesEveryPairOrEachGroupWithTheBaseline) {
   TempDir dir;
   ResultStore store(dir.file("r.sqlite"));

@@ -57,6 +57,21 @@ TEST(RunReport, ErrorColumnsFollowWhatTheRunsRecorded) {
       << csv;
 }
 
+// A run with no environment (curves_demo, trajectory files) records the held-out
+// demonstrations' errors, which get their own columns.
+TEST(RunReport, HeldOutErrorsOfRunsWithoutAnEnvironmentGetColumns) {
+  TempDir dir;
+  ResultStore store(dir.file("r.sqlite"));
+  const int64_t id =
+      store.begin_run({"curves_demo", "seed: 0\n", "hash", 0, "", false, "", "", 0, ""});
+  store.complete_run(id, {}, {{"full_error_mean", 0.00412}, {"full_error_max", 0.0183}});
+  const auto runs = load_run_summaries(store, {});
+  const std::string markdown = report_markdown(runs, {});
+  EXPECT_NE(markdown.find("| full error mean / max (held-out) |"), std::string::npos) << markdown;
+  EXPECT_NE(markdown.find("| 0.00 / 0.02 |"), std::string::npos) << markdown;
+  EXPECT_NE(report_csv(runs, {}).find("full_error_mean,full_error_max\n"), std::string::npos);
+}
+
 TEST(RunReport, FlattensConfigsToDottedKeys) {
   const auto flat = flatten_yaml(
       "seed: 3\nevaluation: {seed: 2, trials: 25}\nshape: [1, 2]\n"
