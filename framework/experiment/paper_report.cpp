@@ -43,6 +43,9 @@ constexpr double kCentimetreRounding = 0.005;
 
 using RunsOf = std::map<std::string, std::vector<const RunSummary*>>;
 
+// Fewer seeds of an experiment than this make the report warn that its verdicts say little.
+constexpr size_t kMinimumSeeds = 3;
+
 std::vector<double> samples(const std::vector<const RunSummary*>& runs, const std::string& metric) {
   std::vector<double> values;
   for (const auto* run : runs) {
@@ -426,6 +429,30 @@ std::string figures_section(const std::vector<ReportFigure>& figures,
   return out;
 }
 
+namespace {
+
+// A warning above the tables when the runs are too small for their verdicts to say much: fewer
+// trials per run than the paper's, or fewer than 3 seeds of an experiment (the reproduction
+// runs 5). "" when they are not.
+std::string scale_note(const RunsOf& runs_of, int paper_trials) {
+  int fewest_trials = paper_trials;
+  size_t fewest_runs = kMinimumSeeds;
+  for (const auto& [experiment, runs] : runs_of) {
+    fewest_runs = std::min(fewest_runs, runs.size());
+    for (const RunSummary* run : runs) fewest_trials = std::min(fewest_trials, run->trials);
+  }
+  if (fewest_trials >= paper_trials && fewest_runs >= kMinimumSeeds) return "";
+  return fmt::format(
+      "**Small runs.** The selection has as few as {} trials in a run (the paper: {}) and {} "
+      "run{} (seeds) of an experiment (the reproduction: 5). The intervals are wide, so "
+      "\"reproduced\" only says that the paper's number is not ruled out: such runs check that "
+      "the pipeline works (as `scripts/reproduce_paper --quick` does), not what the method "
+      "achieves.\n\n",
+      fewest_trials, paper_trials, fewest_runs, fewest_runs == 1 ? "" : "s");
+}
+
+}  // namespace
+
 ReproductionReport reproduction_report(const ReproductionInputs& inputs) {
   std::vector<std::string> experiments;
   for (const auto& g : kCorridorGroups) experiments.push_back(g.experiment);
@@ -451,6 +478,7 @@ ReproductionReport reproduction_report(const ReproductionInputs& inputs) {
       md += fmt::format(" ({}, created {}, {} jobs)", s.name, s.created_at, s.jobs);
     md += fmt::format(": {} runs read.\n\n", inputs.runs.size());
   }
+  md += scale_note(runs_of, static_cast<int>(paper_expected_trials(tables)));
   md += "## Runs\n\n" + runs_section(runs_of, experiments, inputs.runs);
   md +=
       "\n## How to read the tables\n\n"

@@ -207,6 +207,31 @@ TEST(PaperReport, TableOneHoldsMeansWithIntervalsBesideThePapersNumbers) {
       << md;
 }
 
+// Runs smaller than the paper's (here 4-5 trials, one seed of corridor_ae) get a warning that
+// their verdicts say little; runs of the paper's size do not.
+TEST(PaperReport, WarnsWhenTheRunsAreTooSmallForTheVerdictsToMeanMuch) {
+  TempDir dir;
+  ResultStore store(dir.file("r.sqlite"));
+  record_sweep(store);
+  const std::string small = sweep_report(store).markdown;
+  EXPECT_NE(small.find("**Small runs.** The selection has as few as 4 trials in a run (the "
+                       "paper: 25) and 1 run (seeds) of an experiment"),
+            std::string::npos)
+      << small;
+  EXPECT_LT(small.find("**Small runs.**"), small.find("## Runs"));
+
+  TempDir full_dir;
+  ResultStore full(full_dir.file("r.sqlite"));
+  testing::add_sweep(full, "s1", "paper", 3);
+  std::vector<TrialSpec> trials;
+  for (int t = 0; t < 25; ++t) trials.push_back({"push", "push", true});
+  for (int job = 0; job < 3; ++job)
+    testing::record_run(
+        full, corridor_run("corridor_pc", job, {1.0, 1.0, 1.0, 0.8, 1.4, 3.0, 3.0}, trials));
+  const std::string sized = sweep_report(full).markdown;
+  EXPECT_EQ(sized.find("Small runs"), std::string::npos) << sized;
+}
+
 TEST(PaperReport, TableTwoJudgesErrorsLowerIsBetter) {
   TempDir dir;
   ResultStore store(dir.file("r.sqlite"));
