@@ -216,6 +216,10 @@ int main(int argc, char** argv) {
       corrmp::write_reproduction_report(corrmp::reproduction_report(inputs), out_dir);
       std::cout << "report: wrote " << out_dir << "/report.md and report.csv\n";
     } else if (plot_success.empty()) {
+      if (paper && !corrmp::paper_rows_apply(runs, format.paper_tables)) {
+        std::cerr << "report: --paper: the paper's numbers are of the corridor push task "
+                     "(environment corridor_push), and no selected run is; none appended\n";
+      }
       std::cout << (csv ? corrmp::report_csv(runs, format) : corrmp::report_markdown(runs, format));
     }
   } catch (const corrmp::ComparisonError& e) {

@@ -33,11 +33,16 @@ std::string percent_text(const double* rate) {
   return rate ? fmt::format("{:.0f}%", 100 * *rate) : "-";
 }
 
+// Two decimals; three significant digits below 0.1 (errors in metres, or in a dataset's units).
+std::string error_number(const double* value) {
+  return number(value, value && std::fabs(*value) < 0.1 && *value != 0 ? "{:.3g}" : "{:.2f}");
+}
+
 std::string pair_text(const RunSummary& run, const ErrorMetric& column) {
   const double* mean = metric(run, column.mean);
   const double* max = metric(run, column.max);
   if (!mean && !max) return "-";
-  return number(mean) + " / " + number(max);
+  return error_number(mean) + " / " + error_number(max);
 }
 
 std::string varies_text(const RunSummary& run,
@@ -89,10 +94,19 @@ std::vector<PaperRow> paper_rows(const std::string& tables_path) {
 
 }  // namespace
 
+bool paper_rows_apply(const std::vector<RunSummary>& runs, const std::string& paper_tables) {
+  const std::string environment = YAML::LoadFile(paper_tables)["environment"].as<std::string>();
+  return std::any_of(runs.begin(), runs.end(), [&](const RunSummary& run) {
+    const auto type = run.settings.find("environment.type");
+    return type != run.settings.end() && type->second == environment;
+  });
+}
+
 std::string report_markdown(const std::vector<RunSummary>& runs, const ReportFormat& format) {
   const auto varying = varying_settings(runs);
   std::vector<PaperRow> paper;
-  if (!format.paper_tables.empty()) paper = paper_rows(format.paper_tables);
+  if (!format.paper_tables.empty() && paper_rows_apply(runs, format.paper_tables))
+    paper = paper_rows(format.paper_tables);
   std::vector<ErrorMetric> errors = error_metrics(runs);
   for (const auto& row : paper) {  // the paper's errors get their columns too
     for (const auto& [mean, text] : row.errors) {

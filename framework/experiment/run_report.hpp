@@ -14,11 +14,15 @@ namespace corrmp {
 struct ReportFormat {
   std::vector<std::string> extra_metrics;  // more metric columns, by name
   std::string paper_tables;  // when set, the paper's PC, AE and Mono rows from this file
-                             // (assets/paper/tables.yaml) are appended (Markdown only)
+                             // (assets/paper/tables.yaml) are appended (Markdown only) if
+                             // some run is of the task they are of (paper_rows_apply)
   // Each run's status (completed, failed, ...) in a column of the Markdown
   // table, for report --all; the CSV always has one.
   bool status_column = false;
 };
+
+/// True if some run is of the task (environment.type) the paper's tables in this file are of.
+bool paper_rows_apply(const std::vector<RunSummary>& runs, const std::string& paper_tables);
 
 std::string report_markdown(const std::vector<RunSummary>& runs, const ReportFormat& format);
 std::string report_csv(const std::vector<RunSummary>& runs, const ReportFormat& format);

@@ -68,7 +68,7 @@ TEST(RunReport, HeldOutErrorsOfRunsWithoutAnEnvironmentGetColumns) {
   const auto runs = load_run_summaries(store, {});
   const std::string markdown = report_markdown(runs, {});
   EXPECT_NE(markdown.find("| full error mean / max (held-out) |"), std::string::npos) << markdown;
-  EXPECT_NE(markdown.find("| 0.00 / 0.02 |"), std::string::npos) << markdown;
+  EXPECT_NE(markdown.find("| 0.00412 / 0.0183 |"), std::string::npos) << markdown;
   EXPECT_NE(report_csv(runs, {}).find("full_error_mean,full_error_max\n"), std::string::npos);
 }
 
@@ -158,9 +158,10 @@ TEST(RunReport, TabulatesRunsWithTheSettingsTheyVary) {
 TEST(RunReport, AppendsThePapersRows) {
   TempDir dir;
   ResultStore store(dir.file("r.sqlite"));
-  add_run(store, "corridor_pc", "seed: 0\n", 1.0, 0.2);
+  add_run(store, "corridor_pc", "environment: {type: corridor_push}\nseed: 0\n", 1.0, 0.2);
   ReportFormat format;
   format.paper_tables = std::string(PROJECT_DIR) + "/assets/paper/tables.yaml";
+  EXPECT_TRUE(paper_rows_apply(load_run_summaries(store, {}), format.paper_tables));
   const std::string markdown = report_markdown(load_run_summaries(store, {}), format);
   EXPECT_NE(markdown.find("| | paper: pc | | 24 of 25 | 100% | 0.80 / 1.45 | 1.69 / 3.19 |"),
             std::string::npos)
@@ -177,6 +178,20 @@ TEST(RunReport, AppendsThePapersRows) {
   EXPECT_NE(with_status.find("| | paper: pc | | | 24 of 25 | 100% | 0.80 / 1.45 | 1.69 / 3.19 |"),
             std::string::npos)
       << with_status;
+}
+
+// The paper's numbers are of the corridor: a selection of another task's runs gets none.
+TEST(RunReport, AppendsNoPaperRowsToRunsOfAnotherTask) {
+  TempDir dir;
+  ResultStore store(dir.file("r.sqlite"));
+  add_run(store, "rope_color", "environment: {type: rope_knot}\nseed: 0\n", 1.0, 0.2);
+  ReportFormat format;
+  format.paper_tables = std::string(PROJECT_DIR) + "/assets/paper/tables.yaml";
+  const auto runs = load_run_summaries(store, {});
+  EXPECT_FALSE(paper_rows_apply(runs, format.paper_tables));
+  const std::string markdown = report_markdown(runs, format);
+  EXPECT_EQ(markdown.find("paper:"), std::string::npos) << markdown;
+  EXPECT_NE(markdown.find("| rope_color |"), std::string::npos) << markdown;
 }
 
 struct ToolOutcome {
