@@ -136,7 +136,10 @@ void run_stages(Experiment& experiment, const fs::path& dir, const RunOptions& o
   for (const auto& summary : summaries) {
     const std::string team =
         summary.report.team_updates > 0
-            ? fmt::format(" ({} updates on two threads)", summary.report.team_updates)
+            ? fmt::format(
+                  " ({} of the updates on a team of two threads, the rest on one; the "
+                  "same results either way)",
+                  summary.report.team_updates)
             : "";
     spdlog::info(
         "'{}': {} parameters, best validation error {:.4g} (max {:.4g}) at update {} "
