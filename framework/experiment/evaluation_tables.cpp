@@ -4,6 +4,7 @@
 #include <fmt/format.h>
 
 #include <algorithm>
+#include <map>
 
 namespace corrmp {
 
@@ -118,17 +119,24 @@ std::string evaluation_tables(const TaskReport& task, bool decided,
     t += fmt::format("Table I ({}): {} of {} trials succeeded, decision match {}\n", label,
                      successes, count, decided ? percent(count_matches(trials), count) : "-");
     const size_t w = column_width(task.decision_labels, 14);
-    t += fmt::format("  {:<{}} {:<34} {:>15} {:>13}\n", "expected", w, "action choice",
-                     "decision match", "task success");
     const auto decisions = count_decisions(trials);
+    std::map<std::string, std::string> choices;  // per expected decision, "1 push, 2 none"
+    size_t choice_width = 34;  // wide enough for the corridor's; the rope's may need more
+    for (const auto& [name, tally] : decisions) {
+      std::string chosen;
+      for (const auto& [action, n] : tally.chosen) {
+        chosen += fmt::format("{}{} {}", chosen.empty() ? "" : ", ", n, action);
+      }
+      choice_width = std::max(choice_width, chosen.size());
+      choices[name] = chosen;
+    }
+    t += fmt::format("  {:<{}} {:<{}} {:>15} {:>13}\n", "expected", w, "action choice",
+                     choice_width, "decision match", "task success");
     for (const auto& name : task.decision_labels) {
       const auto it = decisions.find(name);
       if (it == decisions.end()) continue;
-      std::string chosen;
-      for (const auto& [action, n] : it->second.chosen) {
-        chosen += fmt::format("{}{} {}", chosen.empty() ? "" : ", ", n, action);
-      }
-      t += fmt::format("  {:<{}} {:<34} {:>15} {:>13}\n", name, w, decided ? chosen : "-",
+      t += fmt::format("  {:<{}} {:<{}} {:>15} {:>13}\n", name, w, decided ? choices[name] : "-",
+                       choice_width,
                        decided ? percent(it->second.matched, it->second.expected) : "-",
                        percent(it->second.succeeded, it->second.expected));
     }

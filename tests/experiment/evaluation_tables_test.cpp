@@ -64,6 +64,29 @@ TEST(EvaluationTables, DecisionsErrorsOutcomesAndFailuresFollowTheTask) {
   EXPECT_NE(tables.find("missed enclose"), std::string::npos) << tables;
 }
 
+// A long action choice (the rope's many correction types) widens its column, so the
+// percentages still line up under their headings.
+TEST(EvaluationTables, ALongActionChoiceKeepsTheColumnsAligned) {
+  TaskReport task;
+  task.decision_labels = {"a", "b"};
+  std::vector<EvaluatedTrial> trials{trial(true, "", "a", "a", 1)};
+  for (const char* chosen :
+       {"anterior-to-posterior", "posterior-to-anterior", "combined", "lateral", "vertical"})
+    trials.push_back(trial(true, "", "b", chosen, 1));
+  const std::string tables = evaluation_tables(task, true, trials, {}, "t");
+  std::vector<std::string> lines;
+  for (size_t at = 0, end; (end = tables.find('\n', at)) != std::string::npos; at = end + 1)
+    lines.push_back(tables.substr(at, end - at));
+  ASSERT_GE(lines.size(), 4u) << tables;
+  const size_t heading_end = lines[1].size(), row_a_end = lines[2].size();
+  EXPECT_EQ(row_a_end, heading_end) << tables;
+  EXPECT_EQ(lines[3].size(), heading_end) << tables;
+  EXPECT_NE(lines[3].find("1 anterior-to-posterior, 1 combined, 1 lateral, 1 "
+                          "posterior-to-anterior, 1 vertical "),
+            std::string::npos)
+      << tables;
+}
+
 TEST(EvaluationTables, APolicyThatMakesNoDecisionHasNoDecisionMatch) {
   TaskReport task;
   task.decision_labels = {"left", "right"};
