@@ -42,10 +42,15 @@ void write_reconstruction_grid(const std::vector<cv::Mat>& images,
   const int scale = std::max(1, (kMinCellSide + longest - 1) / std::max(longest, 1));
   const cv::Size cell(images[0].cols * scale, images[0].rows * scale);
   cv::Mat canvas(2 * blocks * cell.height + (2 * blocks + 1) * kGridGap,
-                 columns * cell.width + (columns + 1) * kGridGap, CV_8UC3, kPlotGrey);
+                 kGridLabelWidth + columns * cell.width + (columns + 1) * kGridGap, CV_8UC3,
+                 kPlotGrey);
+  for (int row = 0; row < 2 * blocks; ++row) {
+    const int y = kGridGap + row * (cell.height + kGridGap) + cell.height / 2;
+    put_text(canvas, row % 2 == 0 ? "image" : "decoded", cv::Point(6, y), 0.45, kPlotWhite);
+  }
   for (int i = 0; i < count; ++i) {
     const int block = i / kGridColumns, column = i % kGridColumns;
-    const int x = kGridGap + column * (cell.width + kGridGap);
+    const int x = kGridLabelWidth + kGridGap + column * (cell.width + kGridGap);
     for (int which = 0; which < 2; ++which) {
       const cv::Mat& source = which == 0 ? images[i] : reconstructions[i];
       cv::Mat resized;

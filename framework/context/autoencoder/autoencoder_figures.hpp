@@ -6,8 +6,9 @@
 // originals with the row of their reconstructions below. Every cell is the size of the first
 // original scaled by an integer factor so that its longer side is at least kMinCellSide pixels
 // (nearest-neighbour, so pixels stay visible); reconstructions are resized to the cell. Cells are
-// separated and framed by kGridGap grey pixels:
-//   width  = columns cell_width + (columns + 1) gap,  columns = min(count, kGridColumns)
+// separated and framed by kGridGap grey pixels, after a kGridLabelWidth margin on the left that
+// names each row ("image", "decoded"):
+//   width  = label + columns cell_width + (columns + 1) gap,  columns = min(count, kGridColumns)
 //   height = 2 blocks cell_height + (2 blocks + 1) gap, blocks = ceil(count / kGridColumns)
 // write_latent_plot: one kPanelWidth x kPanelHeight scatter panel per latent dimension (title
 // "z<k>", min / max tick labels on both axes, x_label under the x axis), kPlotColumns panels per
@@ -27,6 +28,7 @@ namespace corrmp {
 constexpr int kGridColumns = 8;
 constexpr int kMinCellSide = 128;
 constexpr int kGridGap = 4;
+constexpr int kGridLabelWidth = 72;
 constexpr int kPanelWidth = 280;
 constexpr int kPanelHeight = 210;
 constexpr int kPlotColumns = 4;

@@ -5,6 +5,7 @@
 #include <gtest/gtest.h>
 
 #include <cstdio>
+#include <opencv2/core.hpp>
 #include <opencv2/imgcodecs.hpp>
 
 #include "synthetic_squares.hpp"
@@ -24,13 +25,20 @@ TEST(AutoencoderFigures, ReconstructionGridHasTheDocumentedLayout) {
   write_reconstruction_grid(images, reconstructions, path);
   const cv::Mat png = cv::imread(path, cv::IMREAD_COLOR);
   ASSERT_FALSE(png.empty());
-  // 16 px cells scaled by 8 to 128 px; 5 columns, 1 block of 2 rows; 4 px gaps.
-  EXPECT_EQ(png.cols, 5 * 128 + 6 * 4);
+  // 16 px cells scaled by 8 to 128 px; 5 columns, 1 block of 2 rows; 4 px gaps, after the
+  // 72 px margin of the row names.
+  EXPECT_EQ(png.cols, 72 + 5 * 128 + 6 * 4);
   EXPECT_EQ(png.rows, 2 * 128 + 3 * 4);
   // The first original's top-left pixel is background grey; the file is BGR.
-  EXPECT_EQ(png.at<cv::Vec3b>(4, 4), cv::Vec3b(128, 128, 128));
+  EXPECT_EQ(png.at<cv::Vec3b>(4, 72 + 4), cv::Vec3b(128, 128, 128));
   // Centre of the first cell: inside the red square (RGB 230, 40, 40 -> BGR).
-  EXPECT_EQ(png.at<cv::Vec3b>(4 + 64, 4 + 8 * 3), cv::Vec3b(40, 40, 230));
+  EXPECT_EQ(png.at<cv::Vec3b>(4 + 64, 72 + 4 + 8 * 3), cv::Vec3b(40, 40, 230));
+  // The margin names the rows in white (anti-aliased) text.
+  const cv::Mat margin = png(cv::Rect(0, 0, 72, png.rows));
+  cv::Mat white;
+  cv::inRange(margin, cv::Scalar(200, 200, 200), cv::Scalar(255, 255, 255), white);
+  EXPECT_GT(cv::countNonZero(white(cv::Rect(0, 0, 72, 132))), 20);
+  EXPECT_GT(cv::countNonZero(white(cv::Rect(0, 136, 72, 132))), 20);
   std::remove(path.c_str());
 
   // Nine images need two blocks of eight columns.
@@ -38,7 +46,7 @@ TEST(AutoencoderFigures, ReconstructionGridHasTheDocumentedLayout) {
   reconstructions.resize(9, reconstructions[0]);
   write_reconstruction_grid(images, reconstructions, path);
   const cv::Mat two_blocks = cv::imread(path, cv::IMREAD_COLOR);
-  EXPECT_EQ(two_blocks.cols, 8 * 128 + 9 * 4);
+  EXPECT_EQ(two_blocks.cols, 72 + 8 * 128 + 9 * 4);
   EXPECT_EQ(two_blocks.rows, 4 * 128 + 5 * 4);
   std::remove(path.c_str());
 }
