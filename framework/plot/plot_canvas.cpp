@@ -34,8 +34,28 @@ std::pair<double, double> padded_range(double lo, double hi) {
 
 std::string tick_label(double value) { return fmt::format("{:.3g}", value); }
 
+namespace {
+
+// Margins of a plot area in its cell (plot_area_in).
+constexpr int kLeft = 52, kRight = 12, kTop = 24, kBottom = 40;
+
+// Text centred on centre_x within [left, right] at baseline y: at `scale`, or smaller (down to
+// 0.3) when it would not fit, so that a long title is not cut off at the cell's edge.
+void put_centred_text(cv::Mat& canvas, const std::string& text, int centre_x, int left, int right,
+                      int y, double scale) {
+  int baseline = 0;
+  int width = cv::getTextSize(text, cv::FONT_HERSHEY_SIMPLEX, scale, 1, &baseline).width;
+  if (width > right - left && width > 0) {
+    scale = std::max(0.3, scale * (right - left) / width);
+    width = cv::getTextSize(text, cv::FONT_HERSHEY_SIMPLEX, scale, 1, &baseline).width;
+  }
+  const int x = std::max(left, std::min(centre_x - width / 2, right - width));
+  put_text(canvas, text, {x, y}, scale);
+}
+
+}  // namespace
+
 cv::Rect plot_area_in(const cv::Rect& cell) {
-  constexpr int kLeft = 52, kRight = 12, kTop = 24, kBottom = 40;
   return {cell.x + kLeft, cell.y + kTop, cell.width - kLeft - kRight, cell.height - kTop - kBottom};
 }
 
@@ -51,9 +71,10 @@ void PlotPanel::draw_frame(cv::Mat& canvas, const std::string& title, const std:
   const cv::Point top_left = pixels.tl();
   const cv::Point bottom_right = pixels.br();
   cv::rectangle(canvas, top_left, bottom_right, kPlotBlack, 1);
-  put_text(canvas, title,
-           {top_left.x + pixels.width / 2 - 3 * static_cast<int>(title.size()), top_left.y - 8},
-           0.45);
+  // The panel's cell (plot_area_in), less 4 px on each side.
+  const int left = top_left.x - kLeft + 4, right = bottom_right.x + kRight - 4;
+  const int centre = top_left.x + pixels.width / 2;
+  put_centred_text(canvas, title, centre, left, right, top_left.y - 8, 0.45);
   cv::line(canvas, {top_left.x - 4, top_left.y}, top_left, kPlotBlack);
   cv::line(canvas, {top_left.x - 4, bottom_right.y}, {top_left.x, bottom_right.y}, kPlotBlack);
   // The y labels end 6 px left of the axis.
@@ -70,9 +91,7 @@ void PlotPanel::draw_frame(cv::Mat& canvas, const std::string& title, const std:
     put_text(canvas, tick_label(x_min), {top_left.x - 8, bottom_right.y + 16});
     put_text(canvas, tick_label(x_max), {bottom_right.x - 24, bottom_right.y + 16});
   }
-  put_text(
-      canvas, x_label,
-      {top_left.x + pixels.width / 2 - 3 * static_cast<int>(x_label.size()), bottom_right.y + 32});
+  put_centred_text(canvas, x_label, centre, left, right, bottom_right.y + 32, 0.4);
 }
 
 }  // namespace corrmp

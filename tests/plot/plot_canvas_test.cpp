@@ -4,6 +4,7 @@
 
 #include <gtest/gtest.h>
 
+#include <opencv2/core.hpp>
 #include <stdexcept>
 
 namespace corrmp {
@@ -42,6 +43,21 @@ TEST(PlotCanvas, FramesAreDrawnAndUnwritablePathsNamed) {
     EXPECT_EQ(std::string(e.what()).rfind("here: cannot write '/nonexistent-dir/x.png'", 0), 0u)
         << e.what();
   }
+}
+
+// A title longer than its panel is drawn smaller, inside the panel's cell: nothing of it lands
+// in the neighbouring cells (here, outside columns 4 to 296 of a trajectory figure's 300-pixel
+// cell; at its usual size the title is 346 pixels wide).
+TEST(PlotCanvas, LongTitlesAreShrunkToStayInTheirCell) {
+  cv::Mat canvas(120, 400, CV_8UC3, kPlotWhite);
+  const PlotPanel panel{plot_area_in(cv::Rect(0, 0, 300, 120)), 0.0, 1.0, 0.0, 1.0};
+  panel.draw_frame(canvas, "19: combined -> anterior-to-posterior, FAILED", "x");
+  cv::Mat ink;
+  cv::inRange(canvas(cv::Rect(0, 0, 400, panel.pixels.y - 1)), cv::Scalar(0, 0, 0),
+              cv::Scalar(200, 200, 200), ink);
+  EXPECT_GT(cv::countNonZero(ink), 50);  // the title is there
+  EXPECT_EQ(cv::countNonZero(ink.colRange(0, 4)), 0);
+  EXPECT_EQ(cv::countNonZero(ink.colRange(296, 400)), 0);
 }
 
 }  // namespace
