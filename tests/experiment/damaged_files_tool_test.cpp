@@ -1,9 +1,10 @@
 // End-to-end tests of run_experiment and report on damaged files: a result
 // database of garbage bytes or truncated gives one line naming it and exit 2
-// with nothing written; a 0-byte one is used as new with a notice; a
-// demonstration cache replaced by a directory is reported and the run goes
-// through, every time; an output folder that cannot be made and missing or
-// bad demonstration files are refused before a run is recorded.
+// with nothing written; a 0-byte one is used as new with a notice by
+// run_experiment and left as it was by report; a demonstration cache replaced
+// by a directory is reported and the run goes through, every time; an output
+// folder that cannot be made and missing or bad demonstration files are
+// refused before a run is recorded.
 #include <gtest/gtest.h>
 
 #include <filesystem>
@@ -216,6 +217,40 @@ TEST(DamagedFilesTools, DemonstrationFilesWithBadContentsAreRefusedBeforeARunIsR
   ResultStore store(dir.file("r.sqlite"));
   EXPECT_EQ(store.query_int("SELECT count(*) FROM runs"), 1);
   EXPECT_EQ(store.query_int("SELECT count(*) FROM runs WHERE status = 'completed'"), 1);
+}
+
+// report only reads: a 0-byte database (what `touch` leaves) is named as empty, with the exit
+// codes of a database without runs, and left as it was, with no -wal or -shm file; a path
+// without a file is refused and not created.
+TEST(DamagedFilesTools, ReportLeavesAZeroByteDatabaseAsItWas) {
+  TempDir dir;
+  const std::string db = dir.write("r.sqlite", "");
+  const Outcome table = report(dir);
+  EXPECT_EQ(table.exit_code, 1);
+  EXPECT_EQ(table.err, "report: " + db + ": no runs recorded (empty database)\n");
+  EXPECT_EQ(table.out, "");
+  const Outcome compare = testing::report_tool(dir, "--compare");
+  EXPECT_EQ(compare.exit_code, 2);
+  EXPECT_EQ(compare.err, table.err);
+  const Outcome sweep = testing::report_tool(dir, "--sweep some-sweep");
+  EXPECT_EQ(sweep.exit_code, 2);
+  EXPECT_EQ(sweep.err, table.err);
+  ASSERT_TRUE(fs::is_regular_file(db));
+  EXPECT_EQ(fs::file_size(db), 0u) << "the empty database is left as it was";
+  for (const char* suffix : {"-wal", "-shm", "-journal"}) {
+    EXPECT_FALSE(fs::exists(db + suffix)) << suffix;
+  }
+
+  fs::remove(db);
+  const Outcome missing = report(dir);
+  EXPECT_EQ(missing.exit_code, 2);
+  EXPECT_EQ(missing.err, "report: no result database at '" + db + "' (see --db)\n");
+  EXPECT_FALSE(fs::exists(db));
+
+  { ResultStore no_runs(db); }  // a database with its schema and no runs: the same exit codes
+  EXPECT_EQ(report(dir).exit_code, table.exit_code);
+  EXPECT_EQ(testing::report_tool(dir, "--compare").exit_code, compare.exit_code);
+  EXPECT_EQ(testing::report_tool(dir, "--sweep some-sweep").exit_code, sweep.exit_code);
 }
 
 }  // namespace
