@@ -89,6 +89,13 @@ std::string unrecorded_metric(const std::vector<corrmp::RunSummary>& runs,
   return "";
 }
 
+// A 0-byte regular file: what `touch` leaves, a database with nothing recorded yet.
+bool is_empty_file(const std::string& path) {
+  std::error_code error;
+  return std::filesystem::is_regular_file(path, error) &&
+         std::filesystem::file_size(path, error) == 0 && !error;
+}
+
 }  // namespace
 
 int main(int argc, char** argv) {
@@ -148,6 +155,15 @@ int main(int argc, char** argv) {
   }
   if (!std::filesystem::exists(db_path)) {
     return usage_error("no result database at '" + db_path + "' (see --db)");
+  }
+  // A 0-byte file (what `touch` leaves) holds no runs, and opening it would write a schema into
+  // it: say so and leave it alone, with the exit code of a database without runs (a selection
+  // that must name runs is a usage error, an empty table is not).
+  if (is_empty_file(db_path)) {
+    std::cerr << "report: " << db_path << ": no runs recorded (empty database)\n";
+    const bool needs_runs =
+        compare || reproduction || !plot_success.empty() || !query.sweeps.empty();
+    return needs_runs ? 2 : 1;
   }
   try {
     corrmp::ResultStore store(db_path);

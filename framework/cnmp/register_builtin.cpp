@@ -17,8 +17,7 @@ void register_builtin_cnmp(Registry<DemonstrationSource>& demonstrations) {
   demonstrations.add<TrajectoryFilesParams>(
       "trajectory_files", "recorded demonstrations from .npy ([N, T, D]) or CSV files",
       [](const TrajectoryFilesParams& p, const BuildContext&) {
-        check_trajectory_paths(p);
-        return std::make_unique<TrajectoryFiles>(p);
+        return std::make_unique<TrajectoryFiles>(p, load_trajectory_files(p));
       });
 }
 

@@ -1,9 +1,11 @@
 // Demonstration source `trajectory_files`: a researcher's recorded
-// demonstrations (.npy or CSV) as one-segment demonstrations, split at random
-// (from the component's seed stream) into training and validation sets.
+// demonstrations (.npy or CSV), read and checked when the config is loaded, as
+// one-segment demonstrations, split at random (from the component's seed
+// stream) into training and validation sets.
 #pragma once
 
 #include <string>
+#include <utility>
 #include <vector>
 
 #include "cnmp/trajectory_dataset.hpp"
@@ -34,20 +36,33 @@ struct TrajectoryFilesParams {
   }
 };
 
-/// Throws ConfigError naming the first of `params.paths` that does not exist, so that a run
-/// is refused (exit 2, nothing recorded) before it starts; the files' contents are checked
-/// when they are read. Relative paths are taken from the current folder.
-void check_trajectory_paths(const TrajectoryFilesParams& params);
+/// One demonstration as a run uses it, and where it came from ("demos.npy[3]", "a.csv").
+struct LoadedTrajectory {
+  std::string source;
+  CnmpTrajectory trajectory;
+};
+
+/// Reads `params.paths` and selects the columns with the readers train_cnmp uses, so that bad
+/// demonstrations refuse a run (exit 2, nothing recorded) before it starts. Throws ConfigError
+/// naming the first path that does not exist (relative paths are taken from the current folder);
+/// ParameterError at `paths` for a file the readers refuse (NaN, a ragged row, a bad .npy header,
+/// ...; the message names the file, and the line where the reader knows it); and
+/// std::invalid_argument for a column a file lacks, a time column that does not increase or a
+/// varying context (core/registry.hpp turns both into ConfigErrors at the config's line).
+std::vector<LoadedTrajectory> load_trajectory_files(const TrajectoryFilesParams& params);
 
 class TrajectoryFiles : public DemonstrationSource {
  public:
-  explicit TrajectoryFiles(const TrajectoryFilesParams& params) : params_(params) {}
+  /// `trajectories`: the files' contents, from load_trajectory_files(params).
+  TrajectoryFiles(const TrajectoryFilesParams& params, std::vector<LoadedTrajectory> trajectories)
+      : params_(params), trajectories_(std::move(trajectories)) {}
   DemonstrationSplit collect(Environment* environment, Rng& rng) override;
   std::vector<std::string> segments() const override { return {params_.segment}; }
   bool provides_contexts() const override { return !params_.context_columns.empty(); }
 
  private:
   TrajectoryFilesParams params_;
+  std::vector<LoadedTrajectory> trajectories_;
 };
 
 }  // namespace corrmp

@@ -1,13 +1,17 @@
 // End-to-end tests of run_experiment and report on damaged files: a result
 // database of garbage bytes or truncated gives one line naming it and exit 2
-// with nothing written; a 0-byte one is used as new with a
-// notice; a demonstration cache replaced by a directory is reported and the
-// run goes through, every time.
+// with nothing written; a 0-byte one is used as new with a notice by
+// run_experiment and left as it was by report; a demonstration cache replaced
+// by a directory is reported and the run goes through, every time; an output
+// folder that cannot be made and missing or bad demonstration files are
+// refused before a run is recorded.
 #include <gtest/gtest.h>
 
 #include <filesystem>
 #include <fstream>
 #include <sstream>
+#include <string>
+#include <vector>
 
 #include "report_tool.hpp"
 #include "store/result_store.hpp"
@@ -160,6 +164,93 @@ TEST(DamagedFilesTools, MissingDemonstrationFilesAreRefusedBeforeARunIsRecorded)
   expect_no_run(dir, outcome,
                 "demonstrations.paths: '" + dir.file("no-such-recordings") + "' does not exist");
   EXPECT_FALSE(fs::exists(dir.file("runs")));
+}
+
+std::string trajectory_files_config(const std::string& path, const std::string& output,
+                                    const std::string& context) {
+  return "experiment: {name: files}\nseed: 3\ndemonstrations: {type: trajectory_files, paths: [" +
+         path + "], time_column: t, output_columns: [" + output + "], context_columns: [" +
+         context +
+         "]}\npolicy:\n  type: segmented_cnmp\n  network: {width: 8}\n  training: {updates: 50, "
+         "validate_every: 50}\n";
+}
+
+// The files' contents are read when the config is loaded, by the readers train_cnmp uses: a bad
+// file refuses the run as a missing one does, naming the file (and line) and what is wrong.
+TEST(DamagedFilesTools, DemonstrationFilesWithBadContentsAreRefusedBeforeARunIsRecorded) {
+  TempDir dir;
+  const std::string header = "{'descr': '<f8', 'fortran_order': False, 'shape': (2, 3 }\n";
+  std::string npy("\x93NUMPY\x01\x00", 8);
+  npy += static_cast<char>(header.size());
+  npy += '\0';
+  npy += header;
+  struct Case {
+    std::string file, contents, output, key, problem;
+  };
+  const std::vector<Case> cases = {
+      {"nan.csv", "t,x,c\n0,0,1\n1,nan,1\n", "x", "demonstrations.paths",
+       ":3: non-finite value \"nan\" in column 'x'"},
+      {"ragged.csv", "t,x,c\n0,0,1\n1,0.5,1,7\n", "x", "demonstrations.paths",
+       ":3: ragged row: expected 3 fields (as in the header), got 4"},
+      {"columns.csv", "t,x,c\n0,0,1\n1,0.5,1\n", "y", "demonstrations",
+       ": no column 'y' (columns: t, x, c)"},
+      {"header.npy", npy, "c1", "demonstrations.paths",
+       ": malformed .npy header (expected ',' or ')' in tuple"},
+  };
+  for (const Case& c : cases) {
+    SCOPED_TRACE(c.file);
+    const std::string file = dir.write(c.file, c.contents);
+    const Outcome outcome =
+        run_experiment(dir, dir.write("files.yaml", trajectory_files_config(file, c.output, "c")));
+    expect_no_run(dir, outcome, c.key + ": " + file + c.problem);
+    EXPECT_EQ(outcome.err.rfind(dir.file("files.yaml:3:"), 0), 0u) << outcome.err;
+    EXPECT_FALSE(fs::exists(dir.file("runs")));
+  }
+  for (int i = 0; i < 5; ++i) {
+    dir.write("good/" + std::to_string(i) + ".csv",
+              "t,x,c\n0,0,1\n1,0.5,1\n2," + std::to_string(i) + ",1\n");
+  }
+  const Outcome good = run_experiment(
+      dir,
+      dir.write("files.yaml", trajectory_files_config(dir.file("good"), "x", "c")) + " --quiet");
+  ASSERT_EQ(good.exit_code, 0) << good.err;
+  ResultStore store(dir.file("r.sqlite"));
+  EXPECT_EQ(store.query_int("SELECT count(*) FROM runs"), 1);
+  EXPECT_EQ(store.query_int("SELECT count(*) FROM runs WHERE status = 'completed'"), 1);
+}
+
+// report only reads: a 0-byte database (what `touch` leaves) is named as empty, with the exit
+// codes of a database without runs, and left as it was, with no -wal or -shm file; a path
+// without a file is refused and not created.
+TEST(DamagedFilesTools, ReportLeavesAZeroByteDatabaseAsItWas) {
+  TempDir dir;
+  const std::string db = dir.write("r.sqlite", "");
+  const Outcome table = report(dir);
+  EXPECT_EQ(table.exit_code, 1);
+  EXPECT_EQ(table.err, "report: " + db + ": no runs recorded (empty database)\n");
+  EXPECT_EQ(table.out, "");
+  const Outcome compare = testing::report_tool(dir, "--compare");
+  EXPECT_EQ(compare.exit_code, 2);
+  EXPECT_EQ(compare.err, table.err);
+  const Outcome sweep = testing::report_tool(dir, "--sweep some-sweep");
+  EXPECT_EQ(sweep.exit_code, 2);
+  EXPECT_EQ(sweep.err, table.err);
+  ASSERT_TRUE(fs::is_regular_file(db));
+  EXPECT_EQ(fs::file_size(db), 0u) << "the empty database is left as it was";
+  for (const char* suffix : {"-wal", "-shm", "-journal"}) {
+    EXPECT_FALSE(fs::exists(db + suffix)) << suffix;
+  }
+
+  fs::remove(db);
+  const Outcome missing = report(dir);
+  EXPECT_EQ(missing.exit_code, 2);
+  EXPECT_EQ(missing.err, "report: no result database at '" + db + "' (see --db)\n");
+  EXPECT_FALSE(fs::exists(db));
+
+  { ResultStore no_runs(db); }  // a database with its schema and no runs: the same exit codes
+  EXPECT_EQ(report(dir).exit_code, table.exit_code);
+  EXPECT_EQ(testing::report_tool(dir, "--compare").exit_code, compare.exit_code);
+  EXPECT_EQ(testing::report_tool(dir, "--sweep some-sweep").exit_code, sweep.exit_code);
 }
 
 }  // namespace
