@@ -65,6 +65,53 @@ TEST(CnmpTools, TrainOnCsvFilesThenPredictFromAStartPointAndContext) {
   EXPECT_TRUE((p.values.rightCols(2).array() > 0).all());
 }
 
+// A model trained with a task parameter (train_cnmp --x goal) is queried with its value
+// (--x-values), the same at every query time; the CSV has a column for it after time.
+TEST(CnmpTools, AModelWithTaskParametersIsQueriedWithTheirValues) {
+  TempDir dir;
+  write_demos(dir);
+  const std::string model = dir.file("task.cnmp");
+  ASSERT_EQ(run(fmt::format("{} --data {} --time time --x goal --y px,py --updates 50 --width 8 "
+                            "--out {} --quiet",
+                            TRAIN_CNMP_BIN, dir.file("demos"), model)),
+            0);
+  const std::string csv = dir.file("p.csv");
+  ASSERT_EQ(run(fmt::format("{} --model {} --obs 0,0.5,0,0 --x-values 0.5 --steps 6 --out {}",
+                            PREDICT_CNMP_BIN, model, csv)),
+            0);
+  const RawTrajectory p = read_csv_trajectory(csv);
+  ASSERT_EQ(p.columns, (std::vector<std::string>{"x0", "x1", "mean0", "mean1", "std0", "std1"}));
+  ASSERT_EQ(p.values.rows(), 6);
+  for (int t = 0; t < 6; ++t) {
+    EXPECT_DOUBLE_EQ(p.values(t, 0), t / 5.0);
+    EXPECT_EQ(p.values(t, 1), 0.5);
+  }
+  EXPECT_TRUE(p.values.allFinite());
+  EXPECT_TRUE((p.values.rightCols(2).array() > 0).all());
+
+  // Missing or too many values, or values for a model without task parameters: one line, exit 2.
+  std::string err;
+  for (const char* args : {"", "--x-values 0.5,1"}) {
+    EXPECT_EQ(run(fmt::format("{} --model {} --obs 0,0.5,0,0 {}", PREDICT_CNMP_BIN, model, args),
+                  &err, &dir),
+              2)
+        << args;
+    EXPECT_NE(err.find("--x-values: this model needs 1 values, one per task parameter"),
+              std::string::npos)
+        << err;
+    EXPECT_EQ(std::count(err.begin(), err.end(), '\n'), 1) << err;
+  }
+  ASSERT_EQ(run(fmt::format("{} --data {} --time time --y px,py --updates 10 --width 4 --out {} "
+                            "--quiet",
+                            TRAIN_CNMP_BIN, dir.file("demos"), dir.file("time_only.cnmp"))),
+            0);
+  EXPECT_EQ(run(fmt::format("{} --model {} --obs 0,0,0 --x-values 0.5", PREDICT_CNMP_BIN,
+                            dir.file("time_only.cnmp")),
+                &err, &dir),
+            2);
+  EXPECT_NE(err.find("--x-values: this model has no task parameters"), std::string::npos) << err;
+}
+
 TEST(CnmpTools, BadInputGivesAClearErrorAndNonZeroExit) {
   TempDir dir;
   write_demos(dir);
