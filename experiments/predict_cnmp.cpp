@@ -1,13 +1,14 @@
 // predict_cnmp: loads a CNMP model file and writes predicted means and standard
 // deviations as CSV for given observations (start point, via-points, end
 // point), context, query times and, for a model trained with task parameters
-// (train_cnmp --x), their values at the query times. Paper, Section III-A.
+// (train_cnmp --x), their values at the query times; query times beyond the
+// [0, 1] of training get a warning. Paper, Section III-A.
 #include <fmt/format.h>
 #include <fmt/os.h>
 #include <CLI/CLI.hpp>
 
+#include <algorithm>
 #include <cmath>
-
 #include <iostream>
 
 #include "command_line.hpp"
@@ -119,6 +120,13 @@ int main(int argc, char** argv) {
               : fmt::format("--x-values: this model needs {} values, one per task parameter "
                             "(train_cnmp --x), got {}",
                             task_parameters, task_values.size()));
+    }
+    const auto [earliest, latest] = std::minmax_element(times.begin(), times.end());
+    if (*earliest < 0.0 || *latest > 1.0) {
+      std::cerr << fmt::format(
+          "predict_cnmp: warning: query times span [{}, {}], beyond the normalised time range "
+          "[0, 1] of the demonstrations; the prediction there is an extrapolation\n",
+          *earliest, *latest);
     }
     const Eigen::MatrixXd query = query_inputs(times, task_values);
     const corrmp::CnmpPrediction p = model->predict(observations, context, query);

@@ -112,6 +112,42 @@ TEST(CnmpTools, AModelWithTaskParametersIsQueriedWithTheirValues) {
   EXPECT_NE(err.find("--x-values: this model has no task parameters"), std::string::npos) << err;
 }
 
+// Training sees time in [0, 1] only: query times beyond it are predicted, with one warning line
+// naming the range queried; queries inside it warn of nothing.
+TEST(CnmpTools, QueryTimesOutsideZeroToOneGiveOneWarningLine) {
+  TempDir dir;
+  write_demos(dir);
+  const std::string model = dir.file("m.cnmp");
+  ASSERT_EQ(run(fmt::format("{} --data {} --time time --y px,py --context goal --updates 10 "
+                            "--width 4 --out {} --quiet",
+                            TRAIN_CNMP_BIN, dir.file("demos"), model)),
+            0);
+  const std::string csv = dir.file("p.csv");
+  std::string err;
+  EXPECT_EQ(run(fmt::format("{} --model {} --obs 0,0,0 --context 0.5 --query -0.5,0,1.5 --out {}",
+                            PREDICT_CNMP_BIN, model, csv),
+                &err, &dir),
+            0);
+  EXPECT_EQ(std::count(err.begin(), err.end(), '\n'), 1) << err;
+  EXPECT_NE(err.find("warning: query times span [-0.5, 1.5], beyond the normalised time range "
+                     "[0, 1]"),
+            std::string::npos)
+      << err;
+  EXPECT_EQ(read_csv_trajectory(csv).values.rows(), 3);
+  for (const char* times : {"--query 0,0.5,1", "--steps 5"}) {
+    EXPECT_EQ(run(fmt::format("{} --model {} --obs 0,0,0 --context 0.5 {} --out {}",
+                              PREDICT_CNMP_BIN, model, times, csv),
+                  &err, &dir),
+              0);
+    EXPECT_EQ(err, "") << times;
+  }
+  EXPECT_EQ(run(fmt::format("{} --model {} --obs 0,0,0 --context 0.5 --query 0.5,1.25 --out {}",
+                            PREDICT_CNMP_BIN, model, csv),
+                &err, &dir),
+            0);
+  EXPECT_NE(err.find("query times span [0.5, 1.25]"), std::string::npos) << err;
+}
+
 TEST(CnmpTools, BadInputGivesAClearErrorAndNonZeroExit) {
   TempDir dir;
   write_demos(dir);
