@@ -148,6 +148,37 @@ TEST(CnmpTools, QueryTimesOutsideZeroToOneGiveOneWarningLine) {
   EXPECT_NE(err.find("query times span [0.5, 1.25]"), std::string::npos) << err;
 }
 
+// A numeric option given a value that is not a number (or not a whole one, or a negative seed):
+// one line naming the option and the value, exit 2. Integers are decimal: 010 is ten.
+TEST(CnmpTools, ANonNumberForANumericOptionNamesTheOptionAndTheValue) {
+  TempDir dir;
+  write_demos(dir);
+  const std::string train = fmt::format("{} --data {} --time time --y px,py --out {} --quiet",
+                                        TRAIN_CNMP_BIN, dir.file("demos"), dir.file("m.cnmp"));
+  const std::vector<std::pair<std::string, std::string>> train_cases = {
+      {"--updates abc", "--updates: expected an integer, got 'abc'"},
+      {"--batch 1.5", "--batch: expected an integer, got '1.5'"},
+      {"--width x", "--width: expected an integer, got 'x'"},
+      {"--seed abc", "--seed: expected a non-negative integer, got 'abc'"},
+      {"--seed -1", "--seed: expected a non-negative integer, got '-1'"},
+      {"--lr fast", "--lr: expected a number, got 'fast'"},
+      {"--validation-fraction abc", "--validation-fraction: expected a number, got 'abc'"},
+  };
+  std::string err;
+  for (const auto& [args, expected] : train_cases) {
+    EXPECT_EQ(run(train + " " + args, &err, &dir), 2) << args;
+    EXPECT_EQ(err, "train_cnmp: " + expected + " (see --help)\n") << args;
+    EXPECT_FALSE(std::filesystem::exists(dir.file("m.cnmp"))) << args;
+  }
+  ASSERT_EQ(run(train + " --updates 10 --width 4"), 0);
+  const std::string predict = fmt::format("{} --model {} --obs 0,0,0 --out {}", PREDICT_CNMP_BIN,
+                                          dir.file("m.cnmp"), dir.file("p.csv"));
+  EXPECT_EQ(run(predict + " --steps abc", &err, &dir), 2);
+  EXPECT_EQ(err, "predict_cnmp: --steps: expected an integer, got 'abc' (see --help)\n");
+  ASSERT_EQ(run(predict + " --steps 010"), 0);
+  EXPECT_EQ(read_csv_trajectory(dir.file("p.csv")).values.rows(), 10);
+}
+
 TEST(CnmpTools, BadInputGivesAClearErrorAndNonZeroExit) {
   TempDir dir;
   write_demos(dir);
