@@ -1,10 +1,13 @@
 // Command-line parsing shared by the tools: --help prints and exits 0; a usage
-// error prints one line naming the tool and exits 2 (docs/architecture.md,
-// "Command line").
+// error (a value that is not a number for a numeric option too) prints one line
+// naming the tool and exits 2 (docs/architecture.md, "Command line").
 #pragma once
 
 #include <CLI/CLI.hpp>
 
+#include <algorithm>
+#include <cctype>
+#include <cmath>
 #include <iostream>
 #include <optional>
 #include <string>
@@ -30,8 +33,53 @@ inline const CLI::Validator& positive_number() {
   return check;
 }
 
+// Checks `text` as a value of an option of CLI11 type `type` ("INT", "UINT" or "FLOAT"): returns
+// what is wrong, or "" after writing integers in plain decimal (CLI11 would read "010" as octal).
+inline std::string check_number(const std::string& type, std::string& text) {
+  if (type == "FLOAT") {
+    try {
+      size_t used = 0;
+      const double value = std::stod(text, &used);
+      if (used == text.size() && std::isfinite(value)) return "";
+    } catch (const std::exception&) {
+    }
+    return "expected a number, got '" + text + "'";
+  }
+  const bool negative = !text.empty() && text[0] == '-';
+  const size_t sign = !text.empty() && (text[0] == '-' || text[0] == '+') ? 1 : 0;
+  const bool digits =
+      text.size() > sign && std::all_of(text.begin() + sign, text.end(), [](char c) {
+        return std::isdigit(static_cast<unsigned char>(c)) != 0;
+      });
+  if (type == "UINT" && (!digits || negative)) {
+    return "expected a non-negative integer, got '" + text + "'";
+  }
+  if (!digits) return "expected an integer, got '" + text + "'";
+  const size_t first = std::min(text.find_first_not_of('0', sign), text.size() - 1);
+  text = (negative ? "-" : "") + text.substr(first);
+  return "";
+}
+
+// Makes check_number the first check of every integer and floating-point option of `app` and of
+// its subcommands, so that a value that is not a number is named as such
+// ("--threads: expected an integer, got 'abc'"): CLI::Range would say "Value abc not in range 1
+// to 1024", a failed conversion "Could not convert: --seed = abc", and "--seed -1" would wrap.
+inline void check_numeric_options(CLI::App& app) {
+  for (CLI::Option* option : app.get_options()) {
+    const std::string full_type = option->get_type_name();
+    const std::string type = full_type.substr(0, full_type.find(':'));
+    if (type != "INT" && type != "UINT" && type != "FLOAT") continue;
+    option->transform(
+        CLI::Validator([type](std::string& text) { return check_number(type, text); }, ""));
+  }
+  for (CLI::App* subcommand : app.get_subcommands([](CLI::App*) { return true; })) {
+    check_numeric_options(*subcommand);
+  }
+}
+
 // The exit code to return at once, or nothing when the tool should go on.
 inline std::optional<int> parse_command_line(CLI::App& app, int argc, char** argv) {
+  check_numeric_options(app);
   try {
     app.parse(argc, argv);
   } catch (const CLI::CallForHelp& e) {

@@ -299,28 +299,31 @@ std::vector<RawTrajectory> read_npy_trajectories(const std::string& path) {
   }
 
   const auto& shape = header.shape;
-  if (shape.size() != 3 && shape.size() != 2) {
+  if (shape.size() == 2) {  // [T, D] of one demonstration or [N, T] of 1-D ones: not guessed
     throw DataError(fmt::format(
-        "{}: expected a 3-D array [N, T, D] (or a 2-D array [T, D] for one trajectory), got "
-        "shape {}",
+        "{}: got a 2-D array of shape {}, expected a 3-D array [N, T, D] (N demonstrations of T "
+        "steps and D columns); save one demonstration [T, D] as arr[None], N one-column "
+        "demonstrations [N, T] as arr[..., None]",
         path, shape_text(shape)));
   }
-  const bool single = shape.size() == 2;
-  const std::uint64_t n = single ? 1 : shape[0];
-  const std::uint64_t t = shape[shape.size() - 2];
-  const std::uint64_t d = shape[shape.size() - 1];
-  const std::string dims = single ? "[T, D]" : "[N, T, D]";
-  if (!single && n == 0) {
+  if (shape.size() != 3) {
     throw DataError(
-        fmt::format("{}: no trajectories (N = 0) in shape {} {}", path, shape_text(shape), dims));
+        fmt::format("{}: expected a 3-D array [N, T, D], got shape {}", path, shape_text(shape)));
+  }
+  const std::uint64_t n = shape[0];
+  const std::uint64_t t = shape[1];
+  const std::uint64_t d = shape[2];
+  if (n == 0) {
+    throw DataError(
+        fmt::format("{}: no trajectories (N = 0) in shape {} [N, T, D]", path, shape_text(shape)));
   }
   if (t == 0) {
     throw DataError(
-        fmt::format("{}: no time steps (T = 0) in shape {} {}", path, shape_text(shape), dims));
+        fmt::format("{}: no time steps (T = 0) in shape {} [N, T, D]", path, shape_text(shape)));
   }
   if (d == 0) {
     throw DataError(
-        fmt::format("{}: no columns (D = 0) in shape {} {}", path, shape_text(shape), dims));
+        fmt::format("{}: no columns (D = 0) in shape {} [N, T, D]", path, shape_text(shape)));
   }
 
   const std::uint64_t actual = bytes.size() - data_offset;
@@ -353,7 +356,7 @@ std::vector<RawTrajectory> read_npy_trajectories(const std::string& path) {
   std::size_t offset = data_offset;
   for (std::uint64_t i = 0; i < n; ++i) {
     RawTrajectory trajectory;
-    trajectory.source = single ? path : fmt::format("{}[{}]", path, i);
+    trajectory.source = fmt::format("{}[{}]", path, i);
     trajectory.columns = columns;
     trajectory.values.resize(static_cast<Eigen::Index>(t), static_cast<Eigen::Index>(d));
     for (std::uint64_t step = 0; step < t; ++step) {
@@ -361,9 +364,9 @@ std::vector<RawTrajectory> read_npy_trajectories(const std::string& path) {
         const double value = item_size == 4 ? static_cast<double>(decode<float>(bytes, offset))
                                             : decode<double>(bytes, offset);
         if (!std::isfinite(value)) {
-          const std::string where = single ? "" : fmt::format("trajectory {}, ", i);
-          throw DataError(fmt::format("{}: non-finite value {} at {}time step {}, column c{}", path,
-                                      value, where, step, j));
+          throw DataError(
+              fmt::format("{}: non-finite value {} at trajectory {}, time step {}, column c{}",
+                          path, value, i, step, j));
         }
         trajectory.values(static_cast<Eigen::Index>(step), static_cast<Eigen::Index>(j)) = value;
       }

@@ -11,10 +11,11 @@
 namespace corrmp {
 
 // Reads a .npy file (format versions 1.0, 2.0 and 3.0) holding a C-ordered little-endian
-// float32 ('<f4') or float64 ('<f8') array of shape [N, T, D], or [T, D] for one trajectory.
-// Returns one RawTrajectory per demonstration, with columns "c0".."c{D-1}" and sources
-// "path[n]" (just "path" for a 2-D array). Throws DataError, with a one-line message starting
-// with "path: ", for a missing or malformed file, an unsupported dtype, layout or shape, an empty
+// float32 ('<f4') or float64 ('<f8') array of shape [N, T, D]. Returns one RawTrajectory per
+// demonstration, with columns "c0".."c{D-1}" and sources "path[n]". Throws DataError, with a
+// one-line message starting with "path: ", for a missing or malformed file, an unsupported
+// dtype, layout or shape (a 2-D array too: [T, D] of one demonstration and [N, T] of one-column
+// ones cannot be told apart, so the message says how to save either as [N, T, D]), an empty
 // dimension, truncated data, or a NaN / infinite value.
 std::vector<RawTrajectory> read_npy_trajectories(const std::string& path);
 

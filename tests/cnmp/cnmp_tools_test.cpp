@@ -65,6 +65,120 @@ TEST(CnmpTools, TrainOnCsvFilesThenPredictFromAStartPointAndContext) {
   EXPECT_TRUE((p.values.rightCols(2).array() > 0).all());
 }
 
+// A model trained with a task parameter (train_cnmp --x goal) is queried with its value
+// (--x-values), the same at every query time; the CSV has a column for it after time.
+TEST(CnmpTools, AModelWithTaskParametersIsQueriedWithTheirValues) {
+  TempDir dir;
+  write_demos(dir);
+  const std::string model = dir.file("task.cnmp");
+  ASSERT_EQ(run(fmt::format("{} --data {} --time time --x goal --y px,py --updates 50 --width 8 "
+                            "--out {} --quiet",
+                            TRAIN_CNMP_BIN, dir.file("demos"), model)),
+            0);
+  const std::string csv = dir.file("p.csv");
+  ASSERT_EQ(run(fmt::format("{} --model {} --obs 0,0.5,0,0 --x-values 0.5 --steps 6 --out {}",
+                            PREDICT_CNMP_BIN, model, csv)),
+            0);
+  const RawTrajectory p = read_csv_trajectory(csv);
+  ASSERT_EQ(p.columns, (std::vector<std::string>{"x0", "x1", "mean0", "mean1", "std0", "std1"}));
+  ASSERT_EQ(p.values.rows(), 6);
+  for (int t = 0; t < 6; ++t) {
+    EXPECT_DOUBLE_EQ(p.values(t, 0), t / 5.0);
+    EXPECT_EQ(p.values(t, 1), 0.5);
+  }
+  EXPECT_TRUE(p.values.allFinite());
+  EXPECT_TRUE((p.values.rightCols(2).array() > 0).all());
+
+  // Missing or too many values, or values for a model without task parameters: one line, exit 2.
+  std::string err;
+  for (const char* args : {"", "--x-values 0.5,1"}) {
+    EXPECT_EQ(run(fmt::format("{} --model {} --obs 0,0.5,0,0 {}", PREDICT_CNMP_BIN, model, args),
+                  &err, &dir),
+              2)
+        << args;
+    EXPECT_NE(err.find("--x-values: this model needs 1 values, one per task parameter"),
+              std::string::npos)
+        << err;
+    EXPECT_EQ(std::count(err.begin(), err.end(), '\n'), 1) << err;
+  }
+  ASSERT_EQ(run(fmt::format("{} --data {} --time time --y px,py --updates 10 --width 4 --out {} "
+                            "--quiet",
+                            TRAIN_CNMP_BIN, dir.file("demos"), dir.file("time_only.cnmp"))),
+            0);
+  EXPECT_EQ(run(fmt::format("{} --model {} --obs 0,0,0 --x-values 0.5", PREDICT_CNMP_BIN,
+                            dir.file("time_only.cnmp")),
+                &err, &dir),
+            2);
+  EXPECT_NE(err.find("--x-values: this model has no task parameters"), std::string::npos) << err;
+}
+
+// Training sees time in [0, 1] only: query times beyond it are predicted, with one warning line
+// naming the range queried; queries inside it warn of nothing.
+TEST(CnmpTools, QueryTimesOutsideZeroToOneGiveOneWarningLine) {
+  TempDir dir;
+  write_demos(dir);
+  const std::string model = dir.file("m.cnmp");
+  ASSERT_EQ(run(fmt::format("{} --data {} --time time --y px,py --context goal --updates 10 "
+                            "--width 4 --out {} --quiet",
+                            TRAIN_CNMP_BIN, dir.file("demos"), model)),
+            0);
+  const std::string csv = dir.file("p.csv");
+  std::string err;
+  EXPECT_EQ(run(fmt::format("{} --model {} --obs 0,0,0 --context 0.5 --query -0.5,0,1.5 --out {}",
+                            PREDICT_CNMP_BIN, model, csv),
+                &err, &dir),
+            0);
+  EXPECT_EQ(std::count(err.begin(), err.end(), '\n'), 1) << err;
+  EXPECT_NE(err.find("warning: query times span [-0.5, 1.5], beyond the normalised time range "
+                     "[0, 1]"),
+            std::string::npos)
+      << err;
+  EXPECT_EQ(read_csv_trajectory(csv).values.rows(), 3);
+  for (const char* times : {"--query 0,0.5,1", "--steps 5"}) {
+    EXPECT_EQ(run(fmt::format("{} --model {} --obs 0,0,0 --context 0.5 {} --out {}",
+                              PREDICT_CNMP_BIN, model, times, csv),
+                  &err, &dir),
+              0);
+    EXPECT_EQ(err, "") << times;
+  }
+  EXPECT_EQ(run(fmt::format("{} --model {} --obs 0,0,0 --context 0.5 --query 0.5,1.25 --out {}",
+                            PREDICT_CNMP_BIN, model, csv),
+                &err, &dir),
+            0);
+  EXPECT_NE(err.find("query times span [0.5, 1.25]"), std::string::npos) << err;
+}
+
+// A numeric option given a value that is not a number (or not a whole one, or a negative seed):
+// one line naming the option and the value, exit 2. Integers are decimal: 010 is ten.
+TEST(CnmpTools, ANonNumberForANumericOptionNamesTheOptionAndTheValue) {
+  TempDir dir;
+  write_demos(dir);
+  const std::string train = fmt::format("{} --data {} --time time --y px,py --out {} --quiet",
+                                        TRAIN_CNMP_BIN, dir.file("demos"), dir.file("m.cnmp"));
+  const std::vector<std::pair<std::string, std::string>> train_cases = {
+      {"--updates abc", "--updates: expected an integer, got 'abc'"},
+      {"--batch 1.5", "--batch: expected an integer, got '1.5'"},
+      {"--width x", "--width: expected an integer, got 'x'"},
+      {"--seed abc", "--seed: expected a non-negative integer, got 'abc'"},
+      {"--seed -1", "--seed: expected a non-negative integer, got '-1'"},
+      {"--lr fast", "--lr: expected a number, got 'fast'"},
+      {"--validation-fraction abc", "--validation-fraction: expected a number, got 'abc'"},
+  };
+  std::string err;
+  for (const auto& [args, expected] : train_cases) {
+    EXPECT_EQ(run(train + " " + args, &err, &dir), 2) << args;
+    EXPECT_EQ(err, "train_cnmp: " + expected + " (see --help)\n") << args;
+    EXPECT_FALSE(std::filesystem::exists(dir.file("m.cnmp"))) << args;
+  }
+  ASSERT_EQ(run(train + " --updates 10 --width 4"), 0);
+  const std::string predict = fmt::format("{} --model {} --obs 0,0,0 --out {}", PREDICT_CNMP_BIN,
+                                          dir.file("m.cnmp"), dir.file("p.csv"));
+  EXPECT_EQ(run(predict + " --steps abc", &err, &dir), 2);
+  EXPECT_EQ(err, "predict_cnmp: --steps: expected an integer, got 'abc' (see --help)\n");
+  ASSERT_EQ(run(predict + " --steps 010"), 0);
+  EXPECT_EQ(read_csv_trajectory(dir.file("p.csv")).values.rows(), 10);
+}
+
 TEST(CnmpTools, BadInputGivesAClearErrorAndNonZeroExit) {
   TempDir dir;
   write_demos(dir);

@@ -69,6 +69,24 @@ TEST(RunExperiment, MalformedConfigsGiveOneLineExitTwoAndNoDatabaseWrites) {
   EXPECT_FALSE(std::filesystem::exists(dir.file("r.sqlite")));
 }
 
+// A numeric option given a value that is not a number: one line naming the option and the
+// value, exit 2, nothing written.
+TEST(RunExperiment, ANonNumberForANumericOptionNamesTheOptionAndTheValue) {
+  TempDir dir;
+  const std::string config = dir.write("good.yaml", kGood);
+  const std::vector<std::pair<std::string, std::string>> cases = {
+      {"--threads abc", "run_experiment: --threads: expected an integer, got 'abc' (see --help)\n"},
+      {"--threads 1.5", "run_experiment: --threads: expected an integer, got '1.5' (see --help)\n"},
+      {"-j 2x", "run_experiment: --jobs: expected an integer, got '2x' (see --help)\n"},
+  };
+  for (const auto& [args, expected] : cases) {
+    const Outcome outcome = run(dir, config + " " + args);
+    EXPECT_EQ(outcome.exit_code, 2) << args;
+    EXPECT_EQ(outcome.err, expected) << args;
+  }
+  EXPECT_FALSE(std::filesystem::exists(dir.file("r.sqlite")));
+}
+
 // What one component asks of another is checked at load: exit 2 with the
 // file, line and key path of the offending value, before any run is recorded.
 TEST(RunExperiment, MismatchedComponentsAreConfigErrors) {
