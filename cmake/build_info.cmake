@@ -6,12 +6,15 @@ set(commit "unknown")
 set(dirty "false")
 find_program(GIT git)
 if(GIT)
-  execute_process(COMMAND ${GIT} -C ${SOURCE_DIR} rev-parse HEAD
+  # The tree's own repository only: a copy unpacked inside another work tree has a prefix there.
+  execute_process(COMMAND ${GIT} -C ${SOURCE_DIR} rev-parse HEAD --show-prefix
                   OUTPUT_VARIABLE head RESULT_VARIABLE head_failed
                   OUTPUT_STRIP_TRAILING_WHITESPACE ERROR_QUIET)
-  if(NOT head_failed AND NOT head STREQUAL "")
+  if(NOT head_failed AND head MATCHES "^[0-9a-f]+$")
     set(commit "${head}")
-    execute_process(COMMAND ${GIT} -C ${SOURCE_DIR} status --porcelain --untracked-files=no
+    # --no-optional-locks: a commit made while this runs must not find the index locked.
+    execute_process(COMMAND ${GIT} --no-optional-locks -C ${SOURCE_DIR} status --porcelain
+                            --untracked-files=no
                     OUTPUT_VARIABLE changes RESULT_VARIABLE status_failed ERROR_QUIET)
     if(NOT status_failed AND NOT changes STREQUAL "")
       set(dirty "true")

@@ -10,6 +10,7 @@
 #include <cmath>
 #include <iostream>
 #include <optional>
+#include <stdexcept>
 #include <string>
 
 namespace corrmp {
@@ -41,6 +42,8 @@ inline std::string check_number(const std::string& type, std::string& text) {
       size_t used = 0;
       const double value = std::stod(text, &used);
       if (used == text.size() && std::isfinite(value)) return "";
+    } catch (const std::out_of_range&) {
+      return "'" + text + "' is out of range";
     } catch (const std::exception&) {
     }
     return "expected a number, got '" + text + "'";
@@ -57,6 +60,14 @@ inline std::string check_number(const std::string& type, std::string& text) {
   if (!digits) return "expected an integer, got '" + text + "'";
   const size_t first = std::min(text.find_first_not_of('0', sign), text.size() - 1);
   text = (negative ? "-" : "") + text.substr(first);
+  try {  // CLI11 would clamp or misreport a value past the type's range
+    if (type == "UINT")
+      (void)std::stoull(text);
+    else
+      (void)std::stoll(text);
+  } catch (const std::out_of_range&) {
+    return "'" + text + "' is out of range";
+  }
   return "";
 }
 

@@ -114,7 +114,7 @@ int main(int argc, char** argv) {
       ->check(corrmp::positive_number());
   app.add_option("--metric", format.extra_metrics, "more metric columns, by name");
   app.add_flag("--csv", csv, "CSV instead of Markdown");
-  app.add_flag("--paper", paper, "append the paper's rows (Markdown)");
+  app.add_flag("--paper", paper, "append the paper's rows (Markdown; corridor runs)");
   app.add_flag("--all", all, "include failed, interrupted and running runs");
   app.add_flag("--compare", compare,
                "compare groups of runs: means with 95% intervals across seeds, Fisher's exact "
@@ -233,8 +233,9 @@ int main(int argc, char** argv) {
       std::cout << "report: wrote " << out_dir << "/report.md and report.csv\n";
     } else if (plot_success.empty()) {
       if (paper && !corrmp::paper_rows_apply(runs, format.paper_tables)) {
-        std::cerr << "report: --paper: the paper's numbers are of the corridor push task "
-                     "(environment corridor_push), and no selected run is; none appended\n";
+        std::cerr << "report: --paper: the paper's numbers are of the task "
+                  << corrmp::paper_environment(format.paper_tables)
+                  << ", and no selected run is; none appended\n";
       }
       std::cout << (csv ? corrmp::report_csv(runs, format) : corrmp::report_markdown(runs, format));
     }

@@ -2,6 +2,7 @@
 #include "experiment/paper_report.hpp"
 
 #include <fmt/format.h>
+#include <fmt/ranges.h>
 #include <yaml-cpp/yaml.h>
 
 #include <algorithm>
@@ -432,23 +433,33 @@ std::string figures_section(const std::vector<ReportFigure>& figures,
 namespace {
 
 // A warning above the tables when the runs are too small for their verdicts to say much: fewer
-// trials per run than the paper's, or fewer than 3 seeds of an experiment (the reproduction
-// runs 5). "" when they are not.
+// trials in a run than the paper's, or fewer than kMinimumSeeds training seeds of an experiment
+// (the reproduction runs 5). "" when they are not.
 std::string scale_note(const RunsOf& runs_of, int paper_trials) {
   int fewest_trials = paper_trials;
-  size_t fewest_runs = kMinimumSeeds;
+  size_t fewest_seeds = kMinimumSeeds;
   for (const auto& [experiment, runs] : runs_of) {
-    fewest_runs = std::min(fewest_runs, runs.size());
-    for (const RunSummary* run : runs) fewest_trials = std::min(fewest_trials, run->trials);
+    std::set<std::string> seeds;
+    for (const RunSummary* run : runs) {
+      fewest_trials = std::min(fewest_trials, run->trials);
+      const auto seed = run->settings.find("seed");
+      seeds.insert(seed == run->settings.end() ? std::to_string(run->id) : seed->second);
+    }
+    fewest_seeds = std::min(fewest_seeds, seeds.size());
   }
-  if (fewest_trials >= paper_trials && fewest_runs >= kMinimumSeeds) return "";
+  std::vector<std::string> reasons;
+  if (fewest_trials < paper_trials)
+    reasons.push_back(
+        fmt::format("as few as {} trials in a run (the paper: {})", fewest_trials, paper_trials));
+  if (fewest_seeds < kMinimumSeeds)
+    reasons.push_back(fmt::format("{} training seed{} of an experiment (the reproduction: 5)",
+                                  fewest_seeds, fewest_seeds == 1 ? "" : "s"));
+  if (reasons.empty()) return "";
   return fmt::format(
-      "**Small runs.** The selection has as few as {} trials in a run (the paper: {}) and {} "
-      "run{} (seeds) of an experiment (the reproduction: 5). The intervals are wide, so "
-      "\"reproduced\" only says that the paper's number is not ruled out: such runs check that "
-      "the pipeline works (as `scripts/reproduce_paper --quick` does), not what the method "
-      "achieves.\n\n",
-      fewest_trials, paper_trials, fewest_runs, fewest_runs == 1 ? "" : "s");
+      "**Small runs.** The selection has {}. The intervals are wide, so \"reproduced\" only "
+      "says that the paper's number is not ruled out: such runs check that the pipeline works "
+      "(as `scripts/reproduce_paper --quick` does), not what the method achieves.\n\n",
+      fmt::join(reasons, " and "));
 }
 
 }  // namespace

@@ -33,9 +33,14 @@ GitState source_git_state() {
   GitState state;
   const std::string git = fmt::format("git -C '{}' ", CORRMP_SOURCE_DIR);
   std::string output;
-  if (capture(git + "rev-parse HEAD 2>/dev/null", output) && !output.empty()) {
+  // The tree's own repository only (as cmake/build_info.cmake): inside another work tree, the
+  // prefix printed after the commit is not empty.
+  if (capture(git + "rev-parse HEAD --show-prefix 2>/dev/null", output) && !output.empty() &&
+      output.find_first_not_of("\r\n", output.find_first_of("\r\n")) == std::string::npos) {
     state.commit = output.substr(0, output.find_first_of("\r\n"));
-    if (capture(git + "status --porcelain --untracked-files=no 2>/dev/null", output)) {
+    // --no-optional-locks: a commit made meanwhile must not find the index locked.
+    if (capture(git + "--no-optional-locks status --porcelain --untracked-files=no 2>/dev/null",
+                output)) {
       state.dirty = !output.empty();
     }
   }
@@ -51,7 +56,7 @@ std::string source_change_warning(const GitState& built, const GitState& now) {
   };
   return fmt::format(
       "this binary was built from {}, but the source tree is now at {}; the run records the "
-      "binary's state (rebuild to run the code as it is now)",
+      "binary's state (rebuild before the next run or sweep to run the code as it is now)",
       describe(built), describe(now));
 }
 

@@ -25,7 +25,7 @@ std::string report_number(double value) {
   const double size = std::fabs(value);
   if (size >= 1000) return fmt::format("{:.4g}", value);
   // Small values (a few millimetres in metres) keep three significant digits.
-  return size >= 0.1 || size == 0 ? fmt::format("{:.3f}", value) : fmt::format("{:.3g}", value);
+  return size >= 0.1 || size == 0 ? fmt::format("{:.3f}", value) : fmt::format("{:#.3g}", value);
 }
 
 std::string csv_number(double value) {

@@ -35,7 +35,7 @@ std::string percent_text(const double* rate) {
 
 // Two decimals; three significant digits below 0.1 (errors in metres, or in a dataset's units).
 std::string error_number(const double* value) {
-  return number(value, value && std::fabs(*value) < 0.1 && *value != 0 ? "{:.3g}" : "{:.2f}");
+  return number(value, value && std::fabs(*value) < 0.1 && *value != 0 ? "{:#.3g}" : "{:.2f}");
 }
 
 std::string pair_text(const RunSummary& run, const ErrorMetric& column) {
@@ -94,8 +94,14 @@ std::vector<PaperRow> paper_rows(const std::string& tables_path) {
 
 }  // namespace
 
+std::string paper_environment(const std::string& paper_tables) {
+  const YAML::Node environment = YAML::LoadFile(paper_tables)["environment"];
+  return environment ? environment.as<std::string>() : "";
+}
+
 bool paper_rows_apply(const std::vector<RunSummary>& runs, const std::string& paper_tables) {
-  const std::string environment = YAML::LoadFile(paper_tables)["environment"].as<std::string>();
+  const std::string environment = paper_environment(paper_tables);
+  if (environment.empty()) return true;  // tables that name no task go with any runs
   return std::any_of(runs.begin(), runs.end(), [&](const RunSummary& run) {
     const auto type = run.settings.find("environment.type");
     return type != run.settings.end() && type->second == environment;

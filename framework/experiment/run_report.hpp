@@ -21,7 +21,9 @@ struct ReportFormat {
   bool status_column = false;
 };
 
-/// True if some run is of the task (environment.type) the paper's tables in this file are of.
+/// The task (environment type) the paper's tables in this file are of; "" if they name none.
+std::string paper_environment(const std::string& paper_tables);
+/// True if some run is of that task (environment.type), or the tables name none.
 bool paper_rows_apply(const std::vector<RunSummary>& runs, const std::string& paper_tables);
 
 std::string report_markdown(const std::vector<RunSummary>& runs, const ReportFormat& format);

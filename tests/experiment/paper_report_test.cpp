@@ -215,7 +215,7 @@ TEST(PaperReport, WarnsWhenTheRunsAreTooSmallForTheVerdictsToMeanMuch) {
   record_sweep(store);
   const std::string small = sweep_report(store).markdown;
   EXPECT_NE(small.find("**Small runs.** The selection has as few as 4 trials in a run (the "
-                       "paper: 25) and 1 run (seeds) of an experiment"),
+                       "paper: 25) and 1 training seed of an experiment (the reproduction: 5)."),
             std::string::npos)
       << small;
   EXPECT_LT(small.find("**Small runs.**"), small.find("## Runs"));
@@ -230,6 +230,20 @@ TEST(PaperReport, WarnsWhenTheRunsAreTooSmallForTheVerdictsToMeanMuch) {
         full, corridor_run("corridor_pc", job, {1.0, 1.0, 1.0, 0.8, 1.4, 3.0, 3.0}, trials));
   const std::string sized = sweep_report(full).markdown;
   EXPECT_EQ(sized.find("Small runs"), std::string::npos) << sized;
+
+  // The paper's trials, but one seed run three times: only the seeds are named.
+  TempDir one_seed_dir;
+  ResultStore one_seed(one_seed_dir.file("r.sqlite"));
+  testing::add_sweep(one_seed, "s1", "paper", 3);
+  for (int job = 0; job < 3; ++job) {
+    RunSpec spec = corridor_run("corridor_pc", job, {1.0, 1.0, 1.0, 0.8, 1.4, 3.0, 3.0}, trials);
+    spec.config = "seed: 7\n";
+    testing::record_run(one_seed, spec);
+  }
+  const std::string repeated = sweep_report(one_seed).markdown;
+  EXPECT_NE(repeated.find("**Small runs.** The selection has 1 training seed of an experiment"),
+            std::string::npos)
+      << repeated;
 }
 
 TEST(PaperReport, TableTwoJudgesErrorsLowerIsBetter) {

@@ -160,7 +160,7 @@ TEST(RunComparison, ComparesTheHeldOutErrorsOfRunsWithoutAnEnvironment) {
             (std::vector<std::string>{"task_success_rate", "full_error_mean", "full_error_max"}));
   const std::string md = comparison_markdown(c);
   // 0.005 +- t(0.975, 2) 0.001 / sqrt(3) = 0.005 +- 0.00248
-  EXPECT_NE(md.find("| 0.005 [0.00252, 0.00748] | 0.02 [0.0101, 0.0299] |"), std::string::npos)
+  EXPECT_NE(md.find("| 0.00500 [0.00252, 0.00748] | 0.0200 [0.0101, 0.0299] |"), std::string::npos)
       << md;
 }
 

@@ -78,6 +78,8 @@ TEST(RunExperiment, ANonNumberForANumericOptionNamesTheOptionAndTheValue) {
       {"--threads abc", "run_experiment: --threads: expected an integer, got 'abc' (see --help)\n"},
       {"--threads 1.5", "run_experiment: --threads: expected an integer, got '1.5' (see --help)\n"},
       {"-j 2x", "run_experiment: --jobs: expected an integer, got '2x' (see --help)\n"},
+      {"--threads 99999999999999999999",
+       "run_experiment: --threads: '99999999999999999999' is out of range (see --help)\n"},
   };
   for (const auto& [args, expected] : cases) {
     const Outcome outcome = run(dir, config + " " + args);
