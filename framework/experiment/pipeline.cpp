@@ -18,6 +18,7 @@
 #include "core/logging.hpp"
 #include "experiment/demonstration_cache.hpp"
 #include "experiment/environment_evaluation.hpp"
+#include "experiment/interrupted_runs.hpp"
 #include "experiment/offline_evaluation.hpp"
 #include "experiment/policy_fitting.hpp"
 #include "experiment/provenance.hpp"
@@ -209,7 +210,7 @@ void check_output_folder(const fs::path& folder) {
 
 RunResult run_pipeline(Experiment& experiment, const RunOptions& options) {
   ResultStore store(options.db_path);
-  if (const int stale = store.mark_interrupted_runs(); stale > 0) {
+  if (const int stale = mark_interrupted_runs(store); stale > 0) {
     spdlog::warn("{}: marked {} run(s) left 'running' by ended processes as interrupted",
                  options.db_path, stale);
   }

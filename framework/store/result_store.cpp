@@ -196,22 +196,24 @@ void ResultStore::migrate(bool existed_empty) {
   });
 }
 
-int ResultStore::mark_interrupted_runs() {
-  int marked = 0;
+std::vector<ResultStore::InterruptedRun> ResultStore::mark_interrupted_runs() {
+  std::vector<InterruptedRun> marked;
   transaction([&] {
-    Statement running(db_, "SELECT id, pid FROM runs WHERE status = 'running' AND host = ?");
+    marked.clear();  // a retried transaction starts again
+    Statement running(
+        db_,
+        "SELECT id, pid, coalesce(out_dir, '') FROM runs WHERE status = 'running' AND host = ?");
     running.bind(1, host_name());
-    std::vector<int64_t> dead;
     while (running.step()) {
-      if (!process_alive(running.column_int(1))) dead.push_back(running.column_int(0));
+      if (!process_alive(running.column_int(1)))
+        marked.push_back({running.column_int(0), running.column_text(2), utc_timestamp(),
+                          "the process running it ended without finishing"});
     }
     Statement mark(db_,
-                   "UPDATE runs SET status = 'interrupted', finished_at = ?, failure = "
-                   "'the process running it ended without finishing' WHERE id = ?");
-    for (const int64_t id : dead) {
-      mark.bind(1, utc_timestamp()).bind(2, id).run();
-      ++marked;
-    }
+                   "UPDATE runs SET status = 'interrupted', finished_at = ?, failure = ? "
+                   "WHERE id = ?");
+    for (const InterruptedRun& run : marked)
+      mark.bind(1, run.finished_at).bind(2, run.failure).bind(3, run.id).run();
   });
   return marked;
 }

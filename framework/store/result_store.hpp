@@ -64,9 +64,15 @@ class ResultStore {
   ResultStore(const ResultStore&) = delete;
   ResultStore& operator=(const ResultStore&) = delete;
 
+  // A run marked interrupted by mark_interrupted_runs.
+  struct InterruptedRun {
+    int64_t id = 0;
+    std::string out_dir;  // its run folder ("" if it had none yet)
+    std::string finished_at, failure;
+  };
   // Marks runs left 'running' by processes of this host that no longer exist as
-  // 'interrupted'; returns how many.
-  int mark_interrupted_runs();
+  // 'interrupted'; returns them.
+  std::vector<InterruptedRun> mark_interrupted_runs();
 
   // Inserts a run with status 'running' and returns its id.
   int64_t begin_run(const RunRecord& run);

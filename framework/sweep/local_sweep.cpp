@@ -22,6 +22,7 @@
 
 #include "core/interrupt.hpp"
 #include "core/progress.hpp"
+#include "experiment/interrupted_runs.hpp"
 #include "store/result_store.hpp"
 #include "sweep/sweep_manifest.hpp"
 #include "sweep/sweep_records.hpp"
@@ -133,7 +134,7 @@ SweepOutcome run_sweep_locally(const Sweep& sweep, const LocalSweepOptions& opti
     lock.emplace(options.db_path + ".sweep-" + sweep.id + ".lock");
     fs::create_directories(dir);
     write_manifest(manifest.string(), sweep);
-    store.mark_interrupted_runs();
+    mark_interrupted_runs(store);
     record_sweep(store, sweep);
     const auto done = completed_jobs(store, sweep.id);
     for (const auto& job : sweep.jobs) {

@@ -130,11 +130,11 @@ TEST(ResultStore, ARunLeftRunningByAKilledProcessIsMarkedInterrupted) {
   ASSERT_EQ(waitpid(child, &status, 0), child);
   ResultStore store(path);
   const int64_t live = store.begin_run(a_run());  // this process is alive: left alone
-  EXPECT_EQ(store.mark_interrupted_runs(), 1);
+  EXPECT_EQ(store.mark_interrupted_runs().size(), 1u);
   EXPECT_EQ(store.query_int("SELECT COUNT(*) FROM runs WHERE status = 'interrupted'"), 1);
   EXPECT_EQ(store.query_text("SELECT status FROM runs WHERE id = " + std::to_string(live)),
             "running");
-  EXPECT_EQ(store.mark_interrupted_runs(), 0);
+  EXPECT_TRUE(store.mark_interrupted_runs().empty());
 }
 
 }  // namespace
