@@ -20,12 +20,15 @@ std::string csv_cell(const std::string& text) {
   return quoted + "\"";
 }
 
+std::string fixed_number(double value, int decimals) {
+  const double size = std::fabs(value);
+  return size >= 0.1 || size == 0 ? fmt::format("{:.{}f}", value, decimals)
+                                  : fmt::format("{:#.3g}", value);
+}
+
 std::string report_number(double value) {
   if (std::isnan(value)) return "-";
-  const double size = std::fabs(value);
-  if (size >= 1000) return fmt::format("{:.4g}", value);
-  // Small values (a few millimetres in metres) keep three significant digits.
-  return size >= 0.1 || size == 0 ? fmt::format("{:.3f}", value) : fmt::format("{:#.3g}", value);
+  return std::fabs(value) >= 1000 ? fmt::format("{:.4g}", value) : fixed_number(value, 3);
 }
 
 std::string csv_number(double value) {

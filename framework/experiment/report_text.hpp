@@ -15,8 +15,11 @@ std::string markdown_cell(const std::string& text);
 // A CSV field, quoted when it holds a comma, quote or line break.
 std::string csv_cell(const std::string& text);
 
-// A number with three decimals (three significant digits below 0.1, four from
-// 1000 on); "-" for NaN.
+// A number with `decimals` decimals, or three significant digits when it is
+// below 0.1 and not 0 (errors of a few millimetres in metres).
+std::string fixed_number(double value, int decimals);
+// fixed_number with three decimals (four significant digits from 1000 on); "-"
+// for NaN.
 std::string report_number(double value);
 // A CSV number at full precision; empty for NaN.
 std::string csv_number(double value);

@@ -29,14 +29,11 @@ std::vector<std::string> metric_columns(const std::vector<RunSummary>& runs,
       columns.push_back(name);
     }
   };
-  const bool any_decision = std::any_of(runs.begin(), runs.end(), [](const RunSummary& run) {
-    return run.metrics.count("decision_match_rate") > 0;
-  });
-  if (any_decision) add("decision_match_rate");
   const auto recorded = [&](const std::string& name) {
     return std::any_of(runs.begin(), runs.end(),
                        [&](const RunSummary& run) { return run.metrics.count(name) > 0; });
   };
+  if (recorded("decision_match_rate")) add("decision_match_rate");
   for (const auto& error : error_metrics(runs)) {
     add(error.mean);
     if (recorded(error.max)) add(error.max);

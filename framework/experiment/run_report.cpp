@@ -33,10 +33,7 @@ std::string percent_text(const double* rate) {
   return rate ? fmt::format("{:.0f}%", 100 * *rate) : "-";
 }
 
-// Two decimals; three significant digits below 0.1 (errors in metres, or in a dataset's units).
-std::string error_number(const double* value) {
-  return number(value, value && std::fabs(*value) < 0.1 && *value != 0 ? "{:#.3g}" : "{:.2f}");
-}
+std::string error_number(const double* value) { return value ? fixed_number(*value, 2) : "-"; }
 
 std::string pair_text(const RunSummary& run, const ErrorMetric& column) {
   const double* mean = metric(run, column.mean);
