@@ -250,7 +250,7 @@ template <class S>
 void WinogradConv3x3<S>::transform_inputs(const S* images, Index stride, Index count) {
   const Index TW = tile_cols_, T = tile_rows_ * TW, columns = count * T;
   const Index terms = term_stride(in_channels_, columns);
-  S* v = v_.resize(kTerms, terms).data();
+  S* v = input_terms().resize(kTerms, terms).data();
   for (Index n = 0; n < count; ++n)
     for (Index c = 0; c < in_channels_; ++c) {
       // Plane row h + 1 is image row h; rows 0 and past the image stay zero.
@@ -272,7 +272,7 @@ template <class S>
 void WinogradConv3x3<S>::transform_output_grads(const S* images, Index stride, Index count) {
   const Index TW = tile_cols_, T = tile_rows_ * TW, columns = count * T;
   const Index terms = term_stride(out_channels_, columns);
-  S* dm = m_.resize(kTerms, terms).data();
+  S* dm = output_terms().resize(kTerms, terms).data();
   S* tiles = tiles_[0].data();         // the 4x4 tiles, entry (i, j) at tiles + (4 i + j) T
   S* columns_done = tiles_[1].data();  // A applied along each tile column: 6 x 4 per tile
   for (Index n = 0; n < count; ++n)
@@ -294,7 +294,7 @@ void WinogradConv3x3<S>::write_outputs(const S* bias, Index count, S* images, In
                                        bool relu) {
   const Index TW = tile_cols_, T = tile_rows_ * TW, columns = count * T;
   const Index terms = term_stride(out_channels_, columns), pixels = height_ * width_;
-  const S* m = m_.view().data();
+  const S* m = output_terms().view().data();
   S* columns_done = tiles_[0].data();  // A^T applied along each term column: 4 x 6 per tile
   S* tiles = tiles_[1].data();         // the 4x4 output tiles, entry (i, j) at tiles + (4 i + j) T
   const S floor = relu ? S(0) : -std::numeric_limits<S>::infinity();
@@ -321,7 +321,7 @@ void WinogradConv3x3<S>::write_input_grads(Index count, S* images, Index stride,
                                            const S* relu_inputs, Index input_stride) {
   const Index TW = tile_cols_, T = tile_rows_ * TW, columns = count * T;
   const Index terms = term_stride(in_channels_, columns), pixels = height_ * width_;
-  const S* dv = v_.view().data();
+  const S* dv = input_terms().view().data();
   for (Index n = 0; n < count; ++n)
     for (Index c = 0; c < in_channels_; ++c) {
       // B along the patch columns (the rows of tiles past the image stay zero), then along the
@@ -348,17 +348,18 @@ void WinogradConv3x3<S>::forward(const S* weight, const S* bias, ConstMatRef<S> 
   transform_weights(weight);
   const Index batch = x.rows(), chunk = chunk_images(batch);
   const Index tiles = tile_rows_ * tile_cols_, cin = in_channels_, cout = out_channels_;
+  Buffer<S>& scratch = gemm_scratch<S>();
   for (Index first = 0; first < batch; first += chunk) {
     const Index count = std::min(chunk, batch - first), columns = count * tiles;
     transform_inputs(x.row(first).data(), x.outerStride(), count);
     const Index v_terms = term_stride(cin, columns), m_terms = term_stride(cout, columns);
-    m_.resize(kTerms, m_terms);
+    const S* v_data = input_terms().view().data();
+    S* m_data = output_terms().resize(kTerms, m_terms).data();
     for (int xi = 0; xi < kTerms; ++xi) {
       const ConstMatMap<S> u(u_data_ + xi * term_stride(cout, cin), cout, cin);
-      const ConstMatMap<S> v(v_.view().data() + xi * v_terms, cin, columns);
-      gemm<S>(u, Op::kPlain, v, Op::kPlain,
-              MatMap<S>(m_.view().data() + xi * m_terms, cout, columns),
-              /*accumulate=*/false, transposed_);
+      const ConstMatMap<S> v(v_data + xi * v_terms, cin, columns);
+      gemm<S>(u, Op::kPlain, v, Op::kPlain, MatMap<S>(m_data + xi * m_terms, cout, columns),
+              /*accumulate=*/false, scratch);
     }
     write_outputs(bias, count, y.row(first).data(), y.outerStride(), relu);
   }
@@ -373,21 +374,25 @@ void WinogradConv3x3<S>::backward(const S* weight, ConstMatRef<S> x, ConstMatRef
   add_channel_sums(dy, cout, height_ * width_, bias_grad);
   if (batch == 0) return;
   transform_weights(weight);
-  MatMap<S> du = du_.resize(kTerms, term_stride(cout, cin));  // the first chunk writes it
+  // The first chunk writes dU.
+  MatMap<S> du = weight_grad_terms().resize(kTerms, term_stride(cout, cin));
+  Buffer<S>& scratch = gemm_scratch<S>();
   for (Index first = 0; first < batch; first += chunk) {
     const Index count = std::min(chunk, batch - first), columns = count * tiles;
     transform_inputs(x.row(first).data(), x.outerStride(), count);
     transform_output_grads(dy.row(first).data(), dy.outerStride(), count);
     const Index v_terms = term_stride(cin, columns), m_terms = term_stride(cout, columns);
+    S* v_data = input_terms().view().data();
+    const S* m_data = output_terms().view().data();
     for (int xi = 0; xi < kTerms; ++xi) {
       const ConstMatMap<S> u(u_data_ + xi * term_stride(cout, cin), cout, cin);
-      MatMap<S> v(v_.view().data() + xi * v_terms, cin, columns);
-      const ConstMatMap<S> dm(m_.view().data() + xi * m_terms, cout, columns);
+      MatMap<S> v(v_data + xi * v_terms, cin, columns);
+      const ConstMatMap<S> dm(m_data + xi * m_terms, cout, columns);
       gemm<S>(dm, Op::kPlain, v, Op::kTransposed, MatMap<S>(du.data() + xi * du.cols(), cout, cin),
-              /*accumulate=*/first > 0, transposed_);
+              /*accumulate=*/first > 0, scratch);
       // V_xi is used up: it takes dV_xi.
       if (dx != nullptr)
-        gemm<S>(u, Op::kTransposed, dm, Op::kPlain, v, /*accumulate=*/false, transposed_);
+        gemm<S>(u, Op::kTransposed, dm, Op::kPlain, v, /*accumulate=*/false, scratch);
     }
     if (dx != nullptr)
       write_input_grads(count, dx + first * dx_stride, dx_stride,

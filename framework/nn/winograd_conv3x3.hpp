@@ -29,6 +29,7 @@
 
 #include "nn/buffer.hpp"
 #include "nn/tensor.hpp"
+#include "nn/thread_scratch.hpp"
 #include "nn/weight_stamp.hpp"
 
 namespace corrmp::nn {
@@ -89,6 +90,12 @@ class WinogradConv3x3 {
   void write_input_grads(Index count, S* images, Index stride, const S* relu_inputs,
                          Index input_stride);
 
+  // This thread's scratch (nn/thread_scratch.hpp): V, then dV, of one chunk (kTerms rows,
+  // term_stride apart); M or dM of one chunk (likewise); dU summed over the batch.
+  static Buffer<S>& input_terms() { return thread_scratch<S>(Scratch::kInputTerms); }
+  static Buffer<S>& output_terms() { return thread_scratch<S>(Scratch::kOutputTerms); }
+  static Buffer<S>& weight_grad_terms() { return thread_scratch<S>(Scratch::kWeightTerms); }
+
   Index in_channels_, out_channels_, height_, width_;
   KernelLayout layout_;
   Index tile_rows_, tile_cols_;  // ceil(H / 4), ceil(W / 4)
@@ -98,10 +105,6 @@ class WinogradConv3x3 {
   WeightStamp<S> u_stamp_;       // the weights of u_
   const S* u_data_ = nullptr;    // the U in use: u_'s or the weight source's
   const WinogradConv3x3* weight_source_ = nullptr;
-  Buffer<S> v_;           // V, then dV, of one chunk (kTerms rows, term_stride apart)
-  Buffer<S> m_;           // M or dM of one chunk (likewise)
-  Buffer<S> du_;          // dU summed over the batch
-  Buffer<S> transposed_;  // V_xi^T of one chunk (nn/gemm.hpp's scratch)
   // One channel padded by a zero row on top and a zero column on the left, each row y split into
   // the six patch columns of its tiles (split_patch_columns) and stored by row phase: column q of
   // tile tx of padded row y at (y mod 4) block + (q (tile_rows + 1) + y div 4) tile_cols + tx.

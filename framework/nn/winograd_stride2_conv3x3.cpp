@@ -111,7 +111,7 @@ template <class S>
 void WinogradStride2Conv3x3<S>::full_to_terms(const S* images, Index stride, Index count) {
   const Index C = full_channels_, TW = tile_cols_, T = tile_rows_ * TW, columns = count * T;
   const Index terms = term_stride(C, columns);
-  S* v = v_.resize(kTerms, terms).data();
+  S* v = input_terms().resize(kTerms, terms).data();
   S* rows = stage_.data();  // the patch's rows transformed: term eta of row u at (9 u + eta) C
   for (Index n = 0; n < count; ++n) {
     // Pixel (h, w) at padded (h + 1, w + 1); the border and the pixels past the image stay zero.
@@ -133,7 +133,7 @@ template <class S>
 void WinogradStride2Conv3x3<S>::half_to_terms(const S* images, Index stride, Index count) {
   const Index O = half_channels_, TW = tile_cols_, T = tile_rows_ * TW, columns = count * T;
   const Index terms = term_stride(O, columns), plane_cols = 4 * TW;
-  S* m = m_.resize(kTerms, terms).data();
+  S* m = output_terms().resize(kTerms, terms).data();
   S* rows = stage_.data();  // the tile's rows expanded: term eta of row i at (9 i + eta) O
   for (Index n = 0; n < count; ++n) {
     to_pixel_major(images + n * stride, O, half_height_, half_width_, half_plane_.data(),
@@ -155,7 +155,7 @@ void WinogradStride2Conv3x3<S>::terms_to_half(Index count, S* images, Index stri
                                               bool relu, const S* keep, Index keep_stride) {
   const Index O = half_channels_, TW = tile_cols_, T = tile_rows_ * TW, columns = count * T;
   const Index terms = term_stride(O, columns), plane_cols = 4 * TW;
-  const S* m = m_.view().data();
+  const S* m = output_terms().view().data();
   S* rows = stage_.data();  // A9^T along eta: value j of term row xi at (4 xi + j) O
   for (Index n = 0; n < count; ++n) {
     for (Index ty = 0; ty < tile_rows_; ++ty)
@@ -178,7 +178,7 @@ void WinogradStride2Conv3x3<S>::terms_to_full(Index count, S* images, Index stri
                                               bool relu, const S* keep, Index keep_stride) {
   const Index C = full_channels_, TW = tile_cols_, T = tile_rows_ * TW, columns = count * T;
   const Index terms = term_stride(C, columns);
-  const S* v = v_.view().data();
+  const S* v = input_terms().view().data();
   S* rows = stage_.data();  // B9 along eta: patch column col of term row xi at (9 xi + col) C
   for (Index n = 0; n < count; ++n) {
     // Patches overlap by one pixel: tiles in order, each adds its first patch row to what the
@@ -215,21 +215,22 @@ void WinogradStride2Conv3x3<S>::multiply(Buffer<S>& in, Index in_channels, const
   const Index out_terms = term_stride(out_channels, columns);
   const Index weight_terms = term_stride(in_channels, out_channels);
   out.resize(kTerms, out_terms);
+  Buffer<S>& scratch = gemm_scratch<S>();
   for (int xi = 0; xi < kTerms; ++xi)
     gemm<S>(ConstMatMap<S>(in.view().data() + xi * in_terms, columns, in_channels), Op::kPlain,
             ConstMatMap<S>(weights + weight_term(xi) * weight_terms, in_channels, out_channels),
             Op::kPlain, MatMap<S>(out.view().data() + xi * out_terms, columns, out_channels),
-            /*accumulate=*/false, scratch_);
+            /*accumulate=*/false, scratch);
 }
 
 template <class S>
 void WinogradStride2Conv3x3<S>::multiply_forward(Index columns) {
-  multiply(v_, full_channels_, ut_data_, m_, half_channels_, columns);
+  multiply(input_terms(), full_channels_, ut_data_, output_terms(), half_channels_, columns);
 }
 
 template <class S>
 void WinogradStride2Conv3x3<S>::multiply_adjoint(Index columns) {
-  multiply(m_, half_channels_, u_data_, v_, full_channels_, columns);
+  multiply(output_terms(), half_channels_, u_data_, input_terms(), full_channels_, columns);
 }
 
 template <class S>
@@ -237,14 +238,18 @@ void WinogradStride2Conv3x3<S>::accumulate_weight_terms(Index columns, bool firs
   const Index C = full_channels_, O = half_channels_;
   const Index v_terms = term_stride(C, columns), m_terms = term_stride(O, columns);
   const Index u_terms = term_stride(O, C);
-  if (first_chunk) dut_.resize(kWeightTerms, u_terms);
+  Buffer<S>& dut = weight_grad_terms();
+  if (first_chunk) dut.resize(kWeightTerms, u_terms);
+  const S* v = input_terms().view().data();
+  const S* m = output_terms().view().data();
+  Buffer<S>& scratch = gemm_scratch<S>();
   bool written[kWeightTerms] = {};  // in this chunk
   for (int xi = 0; xi < kTerms; ++xi) {
     const int q = weight_term(xi);  // the terms of one weight term add up
-    gemm<S>(ConstMatMap<S>(v_.view().data() + xi * v_terms, columns, C), Op::kTransposed,
-            ConstMatMap<S>(m_.view().data() + xi * m_terms, columns, O), Op::kPlain,
-            MatMap<S>(dut_.view().data() + q * u_terms, C, O),
-            /*accumulate=*/!first_chunk || written[q], scratch_);
+    gemm<S>(ConstMatMap<S>(v + xi * v_terms, columns, C), Op::kTransposed,
+            ConstMatMap<S>(m + xi * m_terms, columns, O), Op::kPlain,
+            MatMap<S>(dut.view().data() + q * u_terms, C, O),
+            /*accumulate=*/!first_chunk || written[q], scratch);
     written[q] = true;
   }
 }
@@ -252,7 +257,7 @@ void WinogradStride2Conv3x3<S>::accumulate_weight_terms(Index columns, bool firs
 template <class S>
 void WinogradStride2Conv3x3<S>::add_weight_grad(S* weight_grad) {
   const Index cin = full_channels_, cout = half_channels_, stride = term_stride(cout, cin);
-  const S* dut = dut_.view().data();
+  const S* dut = weight_grad_terms().view().data();
   S* rows = stage_.data();      // G6^T along q: (p, b) of channel c at (3 p + b) cout + o
   S* pairs = rows + 18 * cout;  // dL/dg_{o,c}[a][b] at (3 a + b) cout + o
   for (Index c = 0; c < cin; ++c) {

@@ -39,6 +39,7 @@
 
 #include "nn/buffer.hpp"
 #include "nn/tensor.hpp"
+#include "nn/thread_scratch.hpp"
 #include "nn/weight_stamp.hpp"
 
 namespace corrmp::nn {
@@ -123,6 +124,13 @@ class WinogradStride2Conv3x3 {
   // dL/dg = G9^T dU G9 added to weight_grad (G6^T on the weight terms).
   void add_weight_grad(S* weight_grad);
 
+  // This thread's scratch (nn/thread_scratch.hpp): V^T (or dV^T) of one chunk, 81 matrices
+  // tiles x C; M^T (or dM^T) of one chunk, 81 matrices tiles x O; dU^T per weight term summed
+  // over the batch, C x O each.
+  static Buffer<S>& input_terms() { return thread_scratch<S>(Scratch::kInputTerms); }
+  static Buffer<S>& output_terms() { return thread_scratch<S>(Scratch::kOutputTerms); }
+  static Buffer<S>& weight_grad_terms() { return thread_scratch<S>(Scratch::kWeightTerms); }
+
   Index full_channels_, half_channels_, height_, width_, half_height_, half_width_;
   Index tile_rows_, tile_cols_;      // ceil(half_height / 4), ceil(half_width / 4)
   Index padded_rows_, padded_cols_;  // 8 tile_rows + 1, 8 tile_cols + 1: the full side padded
@@ -132,10 +140,6 @@ class WinogradStride2Conv3x3 {
   const S* u_data_ = nullptr;        // the weight terms in use: u_'s or the weight source's
   const S* ut_data_ = nullptr;       // likewise, transposed
   const WinogradStride2Conv3x3* weight_source_ = nullptr;
-  Buffer<S> v_;        // V^T (or dV^T) of one chunk: 81 matrices tiles x C
-  Buffer<S> m_;        // M^T (or dM^T) of one chunk: 81 matrices tiles x O
-  Buffer<S> dut_;      // dU^T per weight term summed over the batch, C x O each
-  Buffer<S> scratch_;  // nn/gemm.hpp's
   // One full-resolution image pixel-major with a zero border: pixel (h, w) at
   // ((h + 1) padded_cols + w + 1) C, up to 8 tile_rows + 1 rows and columns.
   Vec<S> full_plane_;
