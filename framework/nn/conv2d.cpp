@@ -8,6 +8,7 @@
 #include "nn/gemm.hpp"
 #include "nn/im2col.hpp"
 #include "nn/relu_fusion.hpp"
+#include "nn/thread_scratch.hpp"
 
 namespace corrmp::nn {
 
@@ -44,22 +45,27 @@ void Conv2d<S>::forward(ConstMatRef<S> x, MatRef<S> y, bool relu) {
     return;
   }
   const Index cout = options_.out_channels, positions = geometry_.positions();
+  // This thread's scratch (nn/thread_scratch.hpp): a chunk's columns, and its outputs
+  // channel-major.
+  Buffer<S>& columns_buffer = thread_scratch<S>(Scratch::kInputSide);
+  Buffer<S>& outputs_buffer = thread_scratch<S>(Scratch::kOutputSide);
+  Buffer<S>& scratch = gemm_scratch<S>();
   for_each_position_chunk(geometry_, x.rows(), [&](const PositionChunk& chunk) {
     const Index columns = chunk.columns(geometry_);
-    MatMap<S> cols = columns_.resize(geometry_.patch_size(), columns);
+    MatMap<S> cols = columns_buffer.resize(geometry_.patch_size(), columns);
     im2col_chunk(x.data(), x.outerStride(), geometry_, chunk, cols.data());
     S* y_first = y.row(chunk.image_begin).data();
     if (chunk.images == 1) {  // positions of one image: a block of its rows, written in place
       StridedMap<S> out(y_first + chunk.row_begin * geometry_.out_width, cout, columns,
                         Eigen::OuterStride<>(positions));
       out.colwise() = bias_;
-      gemm<S>(weight_, Op::kPlain, cols, Op::kPlain, out, /*accumulate=*/true, transposed_);
+      gemm<S>(weight_, Op::kPlain, cols, Op::kPlain, out, /*accumulate=*/true, scratch);
       if (relu) relu_in_place(out);
       return;
     }
-    MatMap<S> out = outputs_.resize(cout, columns);
+    MatMap<S> out = outputs_buffer.resize(cout, columns);
     out.colwise() = bias_;
-    gemm<S>(weight_, Op::kPlain, cols, Op::kPlain, out, /*accumulate=*/true, transposed_);
+    gemm<S>(weight_, Op::kPlain, cols, Op::kPlain, out, /*accumulate=*/true, scratch);
     if (relu) relu_in_place(out);
     scatter_channel_major(out.data(), chunk.images, cout, positions, y_first, y.outerStride());
   });
@@ -85,27 +91,33 @@ void Conv2d<S>::backward_chunks(ConstMatRef<S> x, ConstMatRef<S> dy, S* dx, Inde
     return;
   }
   const Index cout = options_.out_channels, positions = geometry_.positions();
+  // This thread's scratch (nn/thread_scratch.hpp): a chunk's columns, its output gradients
+  // channel-major, and the columns' gradients W^T dY.
+  Buffer<S>& columns_buffer = thread_scratch<S>(Scratch::kInputSide);
+  Buffer<S>& outputs_buffer = thread_scratch<S>(Scratch::kOutputSide);
+  Buffer<S>& column_grads_buffer = thread_scratch<S>(Scratch::kGradients);
+  Buffer<S>& scratch = gemm_scratch<S>();
   for_each_position_chunk(geometry_, x.rows(), [&](const PositionChunk& chunk) {
     const Index columns = chunk.columns(geometry_);
-    MatMap<S> cols = columns_.resize(geometry_.patch_size(), columns);
+    MatMap<S> cols = columns_buffer.resize(geometry_.patch_size(), columns);
     im2col_chunk(x.data(), x.outerStride(), geometry_, chunk, cols.data());
     const S* dy_first = dy.row(chunk.image_begin).data();
     // dY of the chunk, channel-major: a block of one image's rows, or the images gathered.
     const ConstStridedMap<S> dy_chunk =
         chunk.images == 1 ? ConstStridedMap<S>(dy_first + chunk.row_begin * geometry_.out_width,
                                                cout, columns, Eigen::OuterStride<>(positions))
-                          : ConstStridedMap<S>(outputs_.resize(cout, columns).data(), cout, columns,
-                                               Eigen::OuterStride<>(columns));
+                          : ConstStridedMap<S>(outputs_buffer.resize(cout, columns).data(), cout,
+                                               columns, Eigen::OuterStride<>(columns));
     if (chunk.images > 1)
       gather_channel_major(dy_first, dy.outerStride(), chunk.images, cout, positions,
-                           outputs_.view().data());
+                           outputs_buffer.view().data());
     gemm<S>(dy_chunk, Op::kPlain, cols, Op::kTransposed, weight_grad_, /*accumulate=*/true,
-            transposed_);
+            scratch);
     bias_grad_.noalias() += dy_chunk.rowwise().sum();
     if (dx == nullptr) return;
-    MatMap<S> col_grads = column_grads_.resize(geometry_.patch_size(), columns);
+    MatMap<S> col_grads = column_grads_buffer.resize(geometry_.patch_size(), columns);
     gemm<S>(weight_, Op::kTransposed, dy_chunk, Op::kPlain, col_grads, /*accumulate=*/false,
-            transposed_);
+            scratch);
     col2im_chunk(col_grads.data(), geometry_, chunk, dx, dx_stride);
     if (relu_input && chunk.row_end == geometry_.out_height)  // the chunk's images are complete
       mask_by_relu_output(x.row(chunk.image_begin).data(), x.outerStride(), chunk.images,

@@ -103,11 +103,7 @@ class Conv2d {
   Vec<S> bias_;
   Mat<S> weight_grad_;
   Vec<S> bias_grad_;
-  Buffer<S> columns_;                           // U of one chunk
-  Buffer<S> column_grads_;                      // W^T dY of one chunk
-  Buffer<S> outputs_;                           // Y or dY of one chunk, channel-major
-  Buffer<S> transposed_;                        // U^T of one chunk (nn/gemm.hpp's scratch)
-  std::optional<WinogradConv3x3<S>> winograd_;  // for kernel 3, stride 1, padding 1
+  std::optional<WinogradConv3x3<S>> winograd_;                 // for kernel 3, stride 1, padding 1
   std::optional<WinogradStride2Conv3x3<S>> strided_winograd_;  // kernel 3, stride 2, padding 1
 };
 

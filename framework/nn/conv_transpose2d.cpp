@@ -11,6 +11,7 @@
 #include "nn/gemm.hpp"
 #include "nn/im2col.hpp"
 #include "nn/relu_fusion.hpp"
+#include "nn/thread_scratch.hpp"
 
 namespace corrmp::nn {
 namespace {
@@ -92,11 +93,15 @@ void ConvTranspose2d<S>::forward(ConstMatRef<S> x, MatRef<S> y, bool relu) {
     return;
   }
   const Index cin = options_.in_channels;
+  // This thread's scratch (nn/thread_scratch.hpp): a chunk's inputs channel-major, and W^T X.
+  Buffer<S>& channel_major_buffer = thread_scratch<S>(Scratch::kInputSide);
+  Buffer<S>& columns_buffer = thread_scratch<S>(Scratch::kOutputSide);
+  Buffer<S>& scratch = gemm_scratch<S>();
   for_each_position_chunk(geometry_, x.rows(), [&](const PositionChunk& chunk) {
     const ConstStridedMap<S> x_chunk =
-        channel_major_chunk(geometry_, chunk, cin, x.data(), x.outerStride(), channel_major_);
-    MatMap<S> cols = columns_.resize(geometry_.patch_size(), chunk.columns(geometry_));
-    gemm<S>(weight_, Op::kTransposed, x_chunk, Op::kPlain, cols, /*accumulate=*/false, transposed_);
+        channel_major_chunk(geometry_, chunk, cin, x.data(), x.outerStride(), channel_major_buffer);
+    MatMap<S> cols = columns_buffer.resize(geometry_.patch_size(), chunk.columns(geometry_));
+    gemm<S>(weight_, Op::kTransposed, x_chunk, Op::kPlain, cols, /*accumulate=*/false, scratch);
     col2im_chunk(cols.data(), geometry_, chunk, y.data(), y.outerStride(), bias_.data());
     if (relu && chunk.row_end == geometry_.out_height)  // the chunk's images are complete
       relu_in_place(y.middleRows(chunk.image_begin, chunk.images));
@@ -123,29 +128,33 @@ void ConvTranspose2d<S>::backward(ConstMatRef<S> x, ConstMatRef<S> dy, MatRef<S>
   const Index cin = options_.in_channels, cout = options_.out_channels;
   const Index in_pixels = geometry_.positions();
   const Index out_pixels = output_shape().height * output_shape().width;
+  // This thread's scratch (nn/thread_scratch.hpp): a chunk's inputs channel-major, then their
+  // gradients, and im2col(dY).
+  Buffer<S>& channel_major_buffer = thread_scratch<S>(Scratch::kInputSide);
+  Buffer<S>& columns_buffer = thread_scratch<S>(Scratch::kOutputSide);
+  Buffer<S>& scratch = gemm_scratch<S>();
   for_each_position_chunk(geometry_, x.rows(), [&](const PositionChunk& chunk) {
     const Index columns = chunk.columns(geometry_);
     if (chunk.row_begin == 0)
       for (Index n = chunk.image_begin; n < chunk.image_begin + chunk.images; ++n)
         bias_grad_.noalias() += ConstMatMap<S>(dy.row(n).data(), cout, out_pixels).rowwise().sum();
-    MatMap<S> cols = columns_.resize(geometry_.patch_size(), columns);
+    MatMap<S> cols = columns_buffer.resize(geometry_.patch_size(), columns);
     im2col_chunk(dy.data(), dy.outerStride(), geometry_, chunk, cols.data());
     const ConstStridedMap<S> x_chunk =
-        channel_major_chunk(geometry_, chunk, cin, x.data(), x.outerStride(), channel_major_);
-    gemm<S>(x_chunk, Op::kPlain, cols, Op::kTransposed, weight_grad_, /*accumulate=*/true,
-            transposed_);
+        channel_major_chunk(geometry_, chunk, cin, x.data(), x.outerStride(), channel_major_buffer);
+    gemm<S>(x_chunk, Op::kPlain, cols, Op::kTransposed, weight_grad_, /*accumulate=*/true, scratch);
     S* dx_first = dx.row(chunk.image_begin).data();
     if (chunk.images == 1) {  // a block of one image's rows, written in place
       StridedMap<S> dx_block(dx_first + chunk.row_begin * geometry_.out_width, cin, columns,
                              Eigen::OuterStride<>(in_pixels));
-      gemm<S>(weight_, Op::kPlain, cols, Op::kPlain, dx_block, /*accumulate=*/false, transposed_);
+      gemm<S>(weight_, Op::kPlain, cols, Op::kPlain, dx_block, /*accumulate=*/false, scratch);
       if (relu_input)  // x_chunk is the same block of x
         dx_block = (x_chunk.array() > S(0)).select(dx_block.array(), S(0)).matrix();
       return;
     }
     // The gathered inputs are no longer needed: their buffer takes the input gradients.
-    MatMap<S> dx_chunk = channel_major_.resize(cin, columns);
-    gemm<S>(weight_, Op::kPlain, cols, Op::kPlain, dx_chunk, /*accumulate=*/false, transposed_);
+    MatMap<S> dx_chunk = channel_major_buffer.resize(cin, columns);
+    gemm<S>(weight_, Op::kPlain, cols, Op::kPlain, dx_chunk, /*accumulate=*/false, scratch);
     scatter_channel_major(dx_chunk.data(), chunk.images, cin, in_pixels, dx_first,
                           dx.outerStride());
     if (relu_input)

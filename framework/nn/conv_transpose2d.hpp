@@ -94,9 +94,6 @@ class ConvTranspose2d {
   Vec<S> bias_;
   Mat<S> weight_grad_;
   Vec<S> bias_grad_;
-  Buffer<S> columns_;        // W^T X or im2col(dY) of one chunk
-  Buffer<S> channel_major_;  // X, then dL/dX, of one chunk in channel-major order
-  Buffer<S> transposed_;     // im2col(dY)^T of one chunk (nn/gemm.hpp's scratch)
   std::optional<WinogradConv3x3<S>> winograd_;                 // for kernel 3, stride 1, padding 1
   std::optional<WinogradStride2Conv3x3<S>> strided_winograd_;  // kernel 3, stride 2, padding 1
 };

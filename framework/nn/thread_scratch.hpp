@@ -2,22 +2,22 @@
 // paper Section III "Learning the Context"; data-parallel training in
 // context/autoencoder/data_parallel_trainer.hpp).
 //
-// A convolution's call fills chunk-sized matrices (the Winograd term matrices of
-// nn/winograd_conv3x3.hpp and nn/winograd_stride2_conv3x3.hpp, their summed weight terms) that
-// are dead once the call returns. When every layer kept its own, the paper's network held about
-// 8 MB of them per data-parallel replica, and a training step on two replicas touched about 45 MB
-// in all, more than the 32 MB L3 cache of the machine the speed goals were set on: each layer's
-// writes went to lines of its own that had long left the caches. Shared, a layer writes to the
-// lines the previous layer has just used, still in the core's L2 cache. Measured on that machine
-// (2-core Zen 4 EPYC, bench_autoencoder, batch 16, 2 threads, alternated runs of the builds
-// before and after): 862 -> 950 images/s (median of 16 pairs; 14 of 16 won). docs/performance.md
-// keeps the measurement.
+// A convolution's call fills chunk-sized matrices that are dead once the call returns: the
+// Winograd term matrices of nn/winograd_conv3x3.hpp and nn/winograd_stride2_conv3x3.hpp and
+// their summed weight-term gradients, the im2col columns of nn/conv2d.hpp and
+// nn/conv_transpose2d.hpp. When every layer kept its own, the paper's network held about 8 MB
+// of them per data-parallel replica, and a training step on two replicas touched about 45 MB in
+// all, more than the 32 MB L3 cache of the machine the speed goals were set on: each layer wrote
+// to lines of its own that had long left the caches. Shared, a layer writes to the lines the
+// previous layer has just used, still in the core's L2 cache. Measured there (2-core Zen 4 EPYC,
+// bench_autoencoder, batch 16, 2 threads, the builds before and after run in alternated pairs;
+// docs/performance.md, "Scratch per thread"): the Winograd layers' buffers 808 -> 922 images/s
+// (16 pairs, 15 won), the im2col layers' then 922 -> 957 (16 pairs, 13 won).
 //
 // Rules for a user: a slot's contents are valid only within one call of one layer (the call
-// sizes it with Buffer::resize and must not expect anything from an earlier call), and a
-// function using a slot calls nothing that uses the same slot while its contents are needed.
-// Threads never share a slot, so layers of different models may run on different threads at
-// once, as before.
+// sizes it with Buffer::resize and expects nothing from an earlier call), and a function using a
+// slot calls nothing that uses the same slot while its contents are needed. Threads never share
+// a slot, so layers of different models may run on different threads at once, as before.
 #pragma once
 
 #include "nn/buffer.hpp"
@@ -26,9 +26,9 @@ namespace corrmp::nn {
 
 /// The shared buffers. (nn/gemm.hpp's operand copy has its own: gemm_scratch.)
 enum class Scratch {
-  kInputTerms,   ///< the input side's term matrices of one chunk (V, then dV)
-  kOutputTerms,  ///< the output side's (M or dM)
-  kWeightTerms,  ///< the weight terms' gradients summed over a batch (dU)
+  kInputSide,   ///< the input side of one chunk: Winograd's V (then dV), im2col's columns
+  kOutputSide,  ///< the output side: Winograd's M or dM, a chunk's outputs channel-major
+  kGradients,   ///< Winograd's weight-term gradients summed over a batch, im2col's W^T dY
   kCount,
 };
 

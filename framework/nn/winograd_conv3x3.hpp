@@ -92,9 +92,9 @@ class WinogradConv3x3 {
 
   // This thread's scratch (nn/thread_scratch.hpp): V, then dV, of one chunk (kTerms rows,
   // term_stride apart); M or dM of one chunk (likewise); dU summed over the batch.
-  static Buffer<S>& input_terms() { return thread_scratch<S>(Scratch::kInputTerms); }
-  static Buffer<S>& output_terms() { return thread_scratch<S>(Scratch::kOutputTerms); }
-  static Buffer<S>& weight_grad_terms() { return thread_scratch<S>(Scratch::kWeightTerms); }
+  static Buffer<S>& input_terms() { return thread_scratch<S>(Scratch::kInputSide); }
+  static Buffer<S>& output_terms() { return thread_scratch<S>(Scratch::kOutputSide); }
+  static Buffer<S>& weight_grad_terms() { return thread_scratch<S>(Scratch::kGradients); }
 
   Index in_channels_, out_channels_, height_, width_;
   KernelLayout layout_;

@@ -127,9 +127,9 @@ class WinogradStride2Conv3x3 {
   // This thread's scratch (nn/thread_scratch.hpp): V^T (or dV^T) of one chunk, 81 matrices
   // tiles x C; M^T (or dM^T) of one chunk, 81 matrices tiles x O; dU^T per weight term summed
   // over the batch, C x O each.
-  static Buffer<S>& input_terms() { return thread_scratch<S>(Scratch::kInputTerms); }
-  static Buffer<S>& output_terms() { return thread_scratch<S>(Scratch::kOutputTerms); }
-  static Buffer<S>& weight_grad_terms() { return thread_scratch<S>(Scratch::kWeightTerms); }
+  static Buffer<S>& input_terms() { return thread_scratch<S>(Scratch::kInputSide); }
+  static Buffer<S>& output_terms() { return thread_scratch<S>(Scratch::kOutputSide); }
+  static Buffer<S>& weight_grad_terms() { return thread_scratch<S>(Scratch::kGradients); }
 
   Index full_channels_, half_channels_, height_, width_, half_height_, half_width_;
   Index tile_rows_, tile_cols_;      // ceil(half_height / 4), ceil(half_width / 4)

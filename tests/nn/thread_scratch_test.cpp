@@ -14,13 +14,13 @@ namespace corrmp::nn {
 namespace {
 
 TEST(ThreadScratch, OneBufferPerSlotAndThread) {
-  Buffer<float>& input = thread_scratch<float>(Scratch::kInputTerms);
-  EXPECT_EQ(&input, &thread_scratch<float>(Scratch::kInputTerms));
-  EXPECT_NE(&input, &thread_scratch<float>(Scratch::kOutputTerms));
-  EXPECT_NE(&thread_scratch<float>(Scratch::kOutputTerms),
-            &thread_scratch<float>(Scratch::kWeightTerms));
+  Buffer<float>& input = thread_scratch<float>(Scratch::kInputSide);
+  EXPECT_EQ(&input, &thread_scratch<float>(Scratch::kInputSide));
+  EXPECT_NE(&input, &thread_scratch<float>(Scratch::kOutputSide));
+  EXPECT_NE(&thread_scratch<float>(Scratch::kOutputSide),
+            &thread_scratch<float>(Scratch::kGradients));
   const Buffer<float>* other = nullptr;
-  std::thread([&] { other = &thread_scratch<float>(Scratch::kInputTerms); }).join();
+  std::thread([&] { other = &thread_scratch<float>(Scratch::kInputSide); }).join();
   EXPECT_NE(other, &input);
 }
 
