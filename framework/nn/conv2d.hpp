@@ -18,12 +18,13 @@
 // padding 1 and at least kMinStride2WinogradChannels channels on both sides by its stride-2
 // form (nn/winograd_stride2_conv3x3.hpp), with 1.8 times fewer.
 // Initialisation follows torch.nn.Conv2d: W, b ~ U(-1/sqrt(Cin k k), 1/sqrt(Cin k k)), W first.
-// The layer owns only scratch buffers, sized on first use; backward takes the forward input
-// again and recomputes U (cheap next to the products). The products run in nn/gemm.hpp. The
-// layer itself allocates nothing after the first call, but where Eigen computes the products
-// (double, or float without AVX-512, nn/gemm.hpp) those too large for Eigen's 128 KB stack
-// blocking limit (the autoencoder's 32x32 layers) let Eigen allocate its GEMM workspace: a few
-// allocations per call, negligible next to the millions of multiply-adds of such a product.
+// The layer's scratch buffers are its thread's (nn/thread_scratch.hpp), sized on first use;
+// backward takes the forward input again and recomputes U (cheap next to the products). The
+// products run in nn/gemm.hpp. Nothing is allocated once every layer has run on the thread with
+// its largest batch, but where Eigen computes the products (double, or float without AVX-512,
+// nn/gemm.hpp) those too large for Eigen's 128 KB stack blocking limit (the autoencoder's 32x32
+// layers) let Eigen allocate its GEMM workspace: a few allocations per call, negligible next to
+// the millions of multiply-adds of such a product.
 #pragma once
 
 #include <optional>
