@@ -18,6 +18,7 @@
 // (nn/winograd_conv3x3.hpp). With kernel 3, stride 2, padding 1 and at least
 // kMinStride2WinogradChannels channels on both sides it is the adjoint of the stride-2
 // convolution with the same weights, computed by nn/winograd_stride2_conv3x3.hpp.
+// The layer's scratch buffers are its thread's (nn/thread_scratch.hpp), sized on first use.
 // Initialisation follows torch.nn.ConvTranspose2d, whose fan_in is computed from weight
 // dimension 1, i.e. fan_in = Cout k k: W, b ~ U(-1/sqrt(Cout k k), 1/sqrt(Cout k k)), W first.
 #pragma once

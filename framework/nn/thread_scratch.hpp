@@ -2,17 +2,17 @@
 // paper Section III "Learning the Context"; data-parallel training in
 // context/autoencoder/data_parallel_trainer.hpp).
 //
-// A convolution's call fills chunk-sized matrices that are dead once the call returns: the
-// Winograd term matrices of nn/winograd_conv3x3.hpp and nn/winograd_stride2_conv3x3.hpp and
-// their summed weight-term gradients, the im2col columns of nn/conv2d.hpp and
-// nn/conv_transpose2d.hpp. When every layer kept its own, the paper's network held about 8 MB
-// of them per data-parallel replica, and a training step on two replicas touched about 45 MB in
-// all, more than the 32 MB L3 cache of the machine the speed goals were set on: each layer wrote
-// to lines of its own that had long left the caches. Shared, a layer writes to the lines the
-// previous layer has just used, still in the core's L2 cache. Measured there (2-core Zen 4 EPYC,
+// A convolution's call fills chunk-sized matrices that are dead once the call returns: the Winograd
+// term matrices of nn/winograd_conv3x3.hpp and nn/winograd_stride2_conv3x3.hpp and their summed
+// weight-term gradients, the im2col columns of nn/conv2d.hpp and nn/conv_transpose2d.hpp. When
+// every layer kept its own, the paper's network held about 11 MB (by their shapes) of them per
+// data-parallel replica, and a training step on two replicas touched about 50 MB in all, more than
+// the 32 MB L3 cache of the machine the speed goals were set on: each layer wrote to lines of its
+// own that had long left the caches. Shared, a layer writes to the lines the previous layer has
+// just used, likely still in the core's L2 cache. Measured there (2-core Zen 4 EPYC,
 // bench_autoencoder, batch 16, 2 threads, the builds before and after run in alternated pairs;
-// docs/performance.md, "Scratch per thread"): the Winograd layers' buffers 808 -> 922 images/s
-// (16 pairs, 15 won), the im2col layers' then 922 -> 957 (16 pairs, 13 won).
+// docs/performance.md, "Scratch per thread"): the Winograd layers' buffers 808 -> 922 images/s (16
+// pairs, 15 won), the im2col layers' then 922 -> 957 (16 pairs, 13 won).
 //
 // Rules for a user: a slot's contents are valid only within one call of one layer (the call
 // sizes it with Buffer::resize and expects nothing from an earlier call), and a function using a
@@ -26,9 +26,14 @@ namespace corrmp::nn {
 
 /// The shared buffers. (nn/gemm.hpp's operand copy has its own: gemm_scratch.)
 enum class Scratch {
-  kInputSide,   ///< the input side of one chunk: Winograd's V (then dV), im2col's columns
-  kOutputSide,  ///< the output side: Winograd's M or dM, a chunk's outputs channel-major
-  kGradients,   ///< Winograd's weight-term gradients summed over a batch, im2col's W^T dY
+  /// The input side of one chunk: Winograd's V (then dV), a convolution's im2col columns, a
+  /// transposed convolution's inputs channel-major (then their gradients).
+  kInputSide,
+  /// The output side: Winograd's M or dM, a convolution's outputs channel-major, a transposed
+  /// convolution's columns (W^T X or im2col(dY)).
+  kOutputSide,
+  /// Winograd's weight-term gradients summed over a batch, a convolution's column gradients W^T dY.
+  kGradients,
   kCount,
 };
 

@@ -79,14 +79,15 @@ class WinogradConv3x3 {
   Index chunk_images(Index batch) const;
   // Padded row y of a plane laid out as plane_.
   S* plane_row(Vec<S>& plane, Index y) const;
-  // V of `count` images (rows `stride` apart) into v_ (kTerms matrices Cin x count tiles).
+  // V of `count` images (rows `stride` apart) into input_terms() (kTerms matrices Cin x count
+  // tiles).
   void transform_inputs(const S* images, Index stride, Index count);
-  // dM of `count` output-gradient images into m_ (kTerms matrices Cout x count tiles).
+  // dM of `count` output-gradient images into output_terms() (kTerms matrices Cout x count tiles).
   void transform_output_grads(const S* images, Index stride, Index count);
-  // Writes A^T M A + b (through a ReLU with relu) from m_ into `count` images.
+  // Writes A^T M A + b (through a ReLU with relu) from output_terms() into `count` images.
   void write_outputs(const S* bias, Index count, S* images, Index stride, bool relu);
-  // Writes the sum of B dV B^T from v_ into `count` images, times [input > 0] for the inputs
-  // (rows input_stride apart) unless relu_inputs is null.
+  // Writes the sum of B dV B^T from input_terms() into `count` images, times [input > 0] for the
+  // inputs (rows input_stride apart) unless relu_inputs is null.
   void write_input_grads(Index count, S* images, Index stride, const S* relu_inputs,
                          Index input_stride);
 

@@ -101,22 +101,22 @@ class WinogradStride2Conv3x3 {
   static Index term_stride(Index channels, Index count);
   // Images of the batch per chunk.
   Index chunk_images(Index batch) const;
-  // V^T of `count` full-resolution images (rows `stride` apart) into v_.
+  // V^T of `count` full-resolution images (rows `stride` apart) into input_terms().
   void full_to_terms(const S* images, Index stride, Index count);
-  // dM^T of `count` half-resolution images into m_.
+  // dM^T of `count` half-resolution images into output_terms().
   void half_to_terms(const S* images, Index stride, Index count);
-  // A9^T M A9 from m_ into `count` half-resolution images, plus bias unless null, through a
-  // ReLU with relu, masked by [keep > 0] unless keep is null (rows keep_stride apart).
+  // A9^T M A9 from output_terms() into `count` half-resolution images, plus bias unless null,
+  // through a ReLU with relu, masked by [keep > 0] unless keep is null (rows keep_stride apart).
   void terms_to_half(Index count, S* images, Index stride, const S* bias, bool relu, const S* keep,
                      Index keep_stride);
-  // The sum of B9 dV B9^T from v_ into `count` full-resolution images, likewise.
+  // The sum of B9 dV B9^T from input_terms() into `count` full-resolution images, likewise.
   void terms_to_full(Index count, S* images, Index stride, const S* bias, bool relu, const S* keep,
                      Index keep_stride);
   // For every term xi: out_xi (columns x out_channels) = in_xi (columns x in_channels) times
   // weight term weight_term(xi) of `weights` (in_channels x out_channels each).
   void multiply(Buffer<S>& in, Index in_channels, const S* weights, Buffer<S>& out,
                 Index out_channels, Index columns);
-  // For every term: m_ = v_ U^T (forward) or v_ = m_ U (adjoint), on `columns` tiles.
+  // For every term: M^T = V^T U^T (forward) or V^T = M^T U (adjoint), on `columns` tiles.
   void multiply_forward(Index columns);
   void multiply_adjoint(Index columns);
   // dU^T (+)= V dM^T summed over the chunk's tiles, per weight term.
