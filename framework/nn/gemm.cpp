@@ -6,6 +6,7 @@
 #include <type_traits>
 
 #include "nn/check.hpp"
+#include "nn/thread_scratch.hpp"
 #include "nn/transpose.hpp"
 
 #if defined(__AVX512F__)
@@ -219,8 +220,7 @@ bool gemm_float_split_exact() { return CORRMP_GEMM_AVX512 != 0; }
 
 template <class S>
 Buffer<S>& gemm_scratch() {
-  thread_local Buffer<S> buffer;
-  return buffer;
+  return thread_scratch<S>(Scratch::kGemmOperand);
 }
 
 template void gemm<float>(ConstMatRef<float>, Op, ConstMatRef<float>, Op, MatRef<float>, bool,

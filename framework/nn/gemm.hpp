@@ -52,8 +52,9 @@ void gemm(ConstMatRef<S> a, Op op_a, ConstMatRef<S> b, Op op_b, MatRef<S> c, boo
 /// products, used otherwise, group their sums by block position.
 bool gemm_float_split_exact();
 
-/// A scratch buffer for gemm, one per thread: layers that run on several threads at once (a
-/// model predicting in several evaluation trials, a team's members) keep none of their own.
+/// A scratch buffer for gemm, one per thread (nn/thread_scratch.hpp's kGemmOperand): layers that
+/// run on several threads at once (a model predicting in several evaluation trials, a team's
+/// members) keep none of their own.
 template <class S>
 Buffer<S>& gemm_scratch();
 

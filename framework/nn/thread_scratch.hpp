@@ -24,7 +24,7 @@
 
 namespace corrmp::nn {
 
-/// The shared buffers. (nn/gemm.hpp's operand copy has its own: gemm_scratch.)
+/// The shared buffers.
 enum class Scratch {
   /// The input side of one chunk: Winograd's V (then dV), a convolution's im2col columns, a
   /// transposed convolution's inputs channel-major (then their gradients).
@@ -34,6 +34,8 @@ enum class Scratch {
   kOutputSide,
   /// Winograd's weight-term gradients summed over a batch, a convolution's column gradients W^T dY.
   kGradients,
+  /// nn/gemm.hpp's transposed operand, through gemm_scratch (held only during one gemm call).
+  kGemmOperand,
   kCount,
 };
 

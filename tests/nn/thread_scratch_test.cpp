@@ -86,7 +86,8 @@ struct LayerRun {
 
 // NaN in every slot of this thread, up to its capacity.
 void spoil_scratch() {
-  for (Scratch slot : {Scratch::kInputSide, Scratch::kOutputSide, Scratch::kGradients}) {
+  for (Scratch slot :
+       {Scratch::kInputSide, Scratch::kOutputSide, Scratch::kGradients, Scratch::kGemmOperand}) {
     Buffer<float>& buffer = thread_scratch<float>(slot);
     buffer.resize(1, buffer.capacity()).setConstant(std::numeric_limits<float>::quiet_NaN());
   }
