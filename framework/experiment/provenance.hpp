@@ -13,7 +13,7 @@ struct GitState {
   bool dirty = false;
 };
 
-// The state of the source tree (CORRMP_SOURCE_DIR) when this binary was built: what a run
+// The state of the source tree when this binary was built: what a run
 // records. Generated on every build by cmake/build_info.cmake.
 GitState build_git_state();
 
