@@ -6,7 +6,14 @@
 //     of a 96-node rope draped over the bar, swinging.
 //   BM_ScriptedTrial: a whole scripted half-hitch trial (reset, settle, pre-MP,
 //     correction, post-MP, knot check) of the nominal scenario.
+//   BM_KnotDeterminant/N: the knot determinant of an N-vertex (2, 5) torus knot
+//     polygon (all 16 candidate projections).
 #include <benchmark/benchmark.h>
+
+#include <cmath>
+#include <vector>
+
+#include "envs/rope_knot/knot_check.hpp"
 
 #include "envs/rope_knot/rope_knot_scene.hpp"
 #include "envs/rope_knot/rope_knot_script.hpp"
@@ -42,6 +49,19 @@ void BM_ScriptedTrial(benchmark::State& state) {
   state.counters["knots"] = benchmark::Counter(knots, benchmark::Counter::kAvgIterations);
 }
 BENCHMARK(BM_ScriptedTrial)->Unit(benchmark::kMillisecond);
+
+void BM_KnotDeterminant(benchmark::State& state) {
+  const int count = static_cast<int>(state.range(0));
+  std::vector<Eigen::Vector3d> polygon;
+  for (int k = 0; k < count; ++k) {
+    const double t = 2.0 * M_PI * k / count, r = 2.0 + std::cos(5.0 * t);
+    polygon.emplace_back(r * std::cos(2.0 * t), r * std::sin(2.0 * t), std::sin(5.0 * t));
+  }
+  int determinant = 0;
+  for (auto _ : state) determinant = knot_determinant(polygon);
+  state.counters["determinant"] = determinant;
+}
+BENCHMARK(BM_KnotDeterminant)->Arg(100)->Arg(1000)->Arg(8000)->Unit(benchmark::kMillisecond);
 
 }  // namespace
 }  // namespace corrmp

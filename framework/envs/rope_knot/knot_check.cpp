@@ -12,6 +12,9 @@
 #include <string>
 #include <vector>
 
+#include "envs/rope_knot/near_segment_pairs.hpp"
+#include "envs/rope_knot/orientation.hpp"
+
 namespace corrmp {
 namespace {
 
@@ -37,14 +40,21 @@ void require_finite(const Points& curve, const char* where) {
   }
 }
 
-// The closed polygon without consecutive (or first/last) duplicate vertices.
+// Relative to the polygon's size: vertices closer than kMergeDistance to the previous one are
+// dropped, and a projection with a feature smaller than kDegenerateMargin is not generic. The
+// merge is far coarser than the degeneracy so that a short edge left by it cannot make every
+// projection degenerate (a node 1e-10 from its neighbour would).
+constexpr double kMergeDistance = 1e-6;
+constexpr double kDegenerateMargin = 1e-9;
+
+// The closed polygon without consecutive (or first/last) near-duplicate vertices.
 Points distinct_cyclic_vertices(const Points& polygon) {
   Eigen::Vector3d lo = polygon.front(), hi = polygon.front();
   for (const auto& p : polygon) {
     lo = lo.cwiseMin(p);
     hi = hi.cwiseMax(p);
   }
-  const double tolerance = 1e-12 * (hi - lo).norm();
+  const double tolerance = kMergeDistance * (hi - lo).norm();
   Points result;
   for (const auto& p : polygon) {
     if (result.empty() || (p - result.back()).norm() > tolerance) result.push_back(p);
@@ -100,35 +110,41 @@ Diagram project(const Points& polygon, const Eigen::Vector3d& view) {
   }
   Diagram diagram;
   diagram.margin = std::numeric_limits<double>::infinity();
-  std::vector<std::vector<double>> stops_on_segment(n);
   for (int i = 0; i < n; ++i) {
     const Eigen::Vector2d& a0 = flat[i];
     const Eigen::Vector2d& a1 = flat[(i + 1) % n];
     const Eigen::Vector2d& a2 = flat[(i + 2) % n];
     diagram.margin = std::min(
         {diagram.margin, point_segment_distance(a2, a0, a1), point_segment_distance(a0, a1, a2)});
-    for (int j = i + 2; j < n; ++j) {
-      if (i == 0 && j == n - 1) continue;
-      const Eigen::Vector2d& b0 = flat[j];
-      const Eigen::Vector2d& b1 = flat[(j + 1) % n];
-      const double o1 = cross2(a1 - a0, b0 - a0), o2 = cross2(a1 - a0, b1 - a0);
-      const double o3 = cross2(b1 - b0, a0 - b0), o4 = cross2(b1 - b0, a1 - b0);
-      const double separation = endpoints_to_segments_distance(a0, a1, b0, b1);
-      diagram.margin = std::min(diagram.margin, separation);
-      if (!(o1 * o2 < 0.0 && o3 * o4 < 0.0)) continue;
-      const double s = o3 / (o3 - o4), t = o1 / (o1 - o2);
-      const double height_a = height[i] + s * (height[(i + 1) % n] - height[i]);
-      const double height_b = height[j] + t * (height[(j + 1) % n] - height[j]);
-      diagram.margin = std::min(diagram.margin, std::abs(height_a - height_b));
-      stops_on_segment[i].push_back(s * (a1 - a0).norm());
-      stops_on_segment[j].push_back(t * (b1 - b0).norm());
-      if (height_a > height_b) {
-        diagram.crossings.push_back({i + s, j + t});
-      } else {
-        diagram.crossings.push_back({j + t, i + s});
-      }
-    }
   }
+  // Pairs farther apart than the margin so far can neither cross nor lower it.
+  std::vector<std::vector<double>> stops_on_segment(n);
+  for_each_near_segment_pair(flat, diagram.margin, [&](int i, int j) {
+    if (j == i + 1 || (i == 0 && j == n - 1)) return;
+    const Eigen::Vector2d& a0 = flat[i];
+    const Eigen::Vector2d& a1 = flat[(i + 1) % n];
+    const Eigen::Vector2d& b0 = flat[j];
+    const Eigen::Vector2d& b1 = flat[(j + 1) % n];
+    diagram.margin = std::min(diagram.margin, endpoints_to_segments_distance(a0, a1, b0, b1));
+    // Exact signs decide whether the segments cross: rounded ones put crossings between
+    // separate pieces of one straight line.
+    if (orientation(a0, a1, b0) * orientation(a0, a1, b1) >= 0) return;
+    if (orientation(b0, b1, a0) * orientation(b0, b1, a1) >= 0) return;
+    const double o1 = cross2(a1 - a0, b0 - a0), o2 = cross2(a1 - a0, b1 - a0);
+    const double o3 = cross2(b1 - b0, a0 - b0), o4 = cross2(b1 - b0, a1 - b0);
+    const double s = std::clamp(o3 / (o3 - o4), 0.0, 1.0);
+    const double t = std::clamp(o1 / (o1 - o2), 0.0, 1.0);
+    const double height_a = height[i] + s * (height[(i + 1) % n] - height[i]);
+    const double height_b = height[j] + t * (height[(j + 1) % n] - height[j]);
+    diagram.margin = std::min(diagram.margin, std::abs(height_a - height_b));
+    stops_on_segment[i].push_back(s * (a1 - a0).norm());
+    stops_on_segment[j].push_back(t * (b1 - b0).norm());
+    if (height_a > height_b) {
+      diagram.crossings.push_back({i + s, j + t});
+    } else {
+      diagram.crossings.push_back({j + t, i + s});
+    }
+  });
   for (auto& stops : stops_on_segment) {
     std::sort(stops.begin(), stops.end());
     for (size_t k = 1; k < stops.size(); ++k) {
@@ -165,7 +181,7 @@ Diagram generic_diagram(const Points& polygon) {
     Diagram diagram = project(polygon, view);
     if (diagram.margin > best.margin) best = std::move(diagram);
   }
-  if (!(best.margin > 1e-9 * (hi - lo).norm())) {
+  if (!(best.margin > kDegenerateMargin * (hi - lo).norm())) {
     throw std::runtime_error(
         "knot_determinant: no generic projection (the polygon self-intersects or is degenerate)");
   }

@@ -36,6 +36,12 @@ std::vector<Eigen::Vector3d> close_far_away(const std::vector<Eigen::Vector3d>& 
 // the colouring matrix, 2 * x_over - x_under_in - x_under_out (the Alexander
 // matrix at t = -1); the determinant is |det| of that matrix with one row and one
 // column deleted (1 for a diagram with fewer than two crossings).
+// Vertices closer than 1e-6 of the polygon's size (bounding-box diagonal) to the previous
+// one are merged first. Whether two projected segments cross is decided by exact orientation
+// tests, so separate pieces of one straight edge never cross whatever the compiler contracts;
+// a projection is generic when all those distances exceed 1e-9 of the size. Segment pairs are
+// found through a grid, so the time grows about linearly with vertices on curves whose
+// segments are short beside their size.
 // Throws std::invalid_argument for fewer than 3 distinct vertices and
 // std::runtime_error when no generic projection exists (self-intersecting curve).
 int knot_determinant(const std::vector<Eigen::Vector3d>& closed_polygon);

@@ -6,6 +6,7 @@
 
 #include <Eigen/Geometry>
 #include <algorithm>
+#include <array>
 #include <cmath>
 #include <functional>
 #include <stdexcept>
@@ -154,6 +155,62 @@ Points rope_wrapped_once(int count) {
   return resample(rope, count, false);
 }
 
+// Each edge of the closed polygon split into `pieces` exactly collinear pieces.
+Points split_edges(const Points& polygon, int pieces) {
+  Points result;
+  const size_t n = polygon.size();
+  for (size_t i = 0; i < n; ++i) {
+    const Eigen::Vector3d& a = polygon[i];
+    const Eigen::Vector3d& b = polygon[(i + 1) % n];
+    for (int k = 0; k < pieces; ++k) result.push_back(a + (double(k) / pieces) * (b - a));
+  }
+  return result;
+}
+
+// An unknotted open rope: a perfectly straight standing part (nodes exactly on a line), then
+// one loop back over it and away, shifted and, if `rotate`, turned by `angle` about `axis`.
+struct StraightPartRope {
+  int pieces;
+  double half_length, crossing_x, height, width, angle;
+  Eigen::Vector3d axis, shift;
+  bool rotate;
+};
+
+Points rope_looping_over_a_straight_part(const StraightPartRope& p) {
+  Points rope;
+  for (int k = 0; k <= p.pieces; ++k) {
+    rope.emplace_back(-p.half_length + 2 * p.half_length * k / p.pieces, 0.0, 0.0);
+  }
+  for (int k = 1; k <= 40; ++k) {
+    const double s = k / 40.0;
+    const double x = p.half_length + (p.crossing_x - p.half_length) * s;
+    rope.emplace_back(x + 0.05 * std::sin(kPi * s), -p.width * std::cos(kPi * s),
+                      p.height * std::sin(kPi * s) + 0.05);
+  }
+  for (int k = 1; k <= 20; ++k) {
+    rope.emplace_back(p.crossing_x - 0.02 * k, p.width + 0.05 * k, 0.05 - 0.01 * k);
+  }
+  const Eigen::Matrix3d rotation =
+      p.rotate ? Eigen::AngleAxisd(p.angle, p.axis.normalized()).toRotationMatrix()
+               : Eigen::Matrix3d::Identity();
+  return transformed(rope, rotation, p.shift);
+}
+
+StraightPartRope random_straight_part_rope(std::uint64_t seed) {
+  Rng rng(seed);
+  StraightPartRope p;
+  p.pieces = std::array<int, 3>{8, 16, 31}[seed % 3];
+  p.half_length = 1.0 + 0.3 * rng.uniform(-1, 1);
+  p.crossing_x = 0.5 * rng.uniform(-1, 1);
+  p.height = 0.2 + 0.1 * rng.uniform(-1, 1);
+  p.width = 0.3 + 0.1 * rng.uniform(-1, 1);
+  p.angle = kPi * rng.uniform(-1, 1);
+  p.axis = Eigen::Vector3d(rng.uniform(-1, 1), rng.uniform(-1, 1), rng.uniform(-1, 1));
+  p.shift = Eigen::Vector3d(rng.uniform(-1, 1), rng.uniform(-1, 1), rng.uniform(-1, 1));
+  p.rotate = rng.uniform() < 0.5;
+  return p;
+}
+
 TEST(KnotDeterminant, UnknotsHaveDeterminantOne) {
   EXPECT_EQ(knot_determinant(circle({0, 0, 0}, {1, 0, 0}, {0, 1, 0}, 50)), 1);
   EXPECT_EQ(knot_determinant(crumpled_unknot(7, 30)), 1);
@@ -205,6 +262,49 @@ TEST(KnotDeterminant, RejectsDegenerateInput) {
   // Two edges passing through one point: no projection separates them.
   const Points self_intersecting{{-1, 0, 0}, {1, 0, 0}, {1, 1, 0}, {0, 1, 0}, {0, -1, 0}};
   EXPECT_THROW(knot_determinant(self_intersecting), std::runtime_error);
+}
+
+// Rounded orientation tests under multiply-add contraction put crossings between separate
+// pieces of one straight edge; the determinant must not depend on how edges are split.
+TEST(KnotDeterminant, EdgesSplitIntoCollinearRunsKeepTheDeterminant) {
+  for (const auto& rotation : test_rotations()) {
+    for (int pieces : {2, 8, 16}) {
+      const Eigen::Vector3d shift(0.1, 0.2, -0.3);
+      EXPECT_EQ(
+          knot_determinant(split_edges(
+              transformed(circle({0, 0, 0}, {1, 0, 0}, {0, 1, 0}, 9), rotation, shift), pieces)),
+          1)
+          << pieces;
+      for (int q : {3, 5, 7}) {
+        for (int vertices : {2 * q + 1, 13, 20}) {
+          EXPECT_EQ(knot_determinant(split_edges(
+                        transformed(torus_knot_2(q, vertices), rotation, shift), pieces)),
+                    q)
+              << "q " << q << ", " << vertices << " vertices, " << pieces << " pieces";
+        }
+      }
+    }
+  }
+}
+
+TEST(KnotDeterminant, NearDuplicateNodesAreMergedNotDegenerate) {
+  Rng rng(3);
+  for (double gap : {1e-13, 1e-12, 1e-11, 1e-10, 1e-9, 3e-9, 1e-7}) {
+    const Points knot = trefoil(120);
+    Points with_duplicates;
+    for (size_t i = 0; i < knot.size(); ++i) {
+      with_duplicates.push_back(knot[i]);
+      const Eigen::Vector3d direction(rng.uniform(-1, 1), rng.uniform(-1, 1), rng.uniform(-1, 1));
+      // The trefoil's size (bounding box diagonal) is about 6.
+      if (i % 7 == 3) with_duplicates.push_back(knot[i] + 6 * gap * direction.normalized());
+    }
+    EXPECT_EQ(knot_determinant(with_duplicates), 3) << gap;
+  }
+}
+
+TEST(KnotDeterminant, LongPolygonsGiveTheSameDeterminant) {
+  EXPECT_EQ(knot_determinant(torus_knot_2(5, 4000)), 5);
+  EXPECT_EQ(knot_determinant(resample(figure_eight(150), 3000, true)), 5);
 }
 
 TEST(CloseFarAway, KeepsTheNodesAndClosesOnTheSphere) {
@@ -264,6 +364,24 @@ TEST(OpenRope, WrapAroundTheBarIsNotAKnot) {
   EXPECT_NEAR(report.winding_number, 1.0, 1e-9);
   EXPECT_EQ(report.determinant, 1);
   EXPECT_FALSE(report.knotted());
+}
+
+TEST(OpenRope, LoopOverAPerfectlyStraightStandingPartIsNeverKnotted) {
+  // Two that rounded orientation tests under multiply-add contraction reported knotted.
+  std::vector<StraightPartRope> ropes{
+      {31, 0.94543669252865636, -0.20217768787618406, 0.10189860867043188, 0.35928280913565586, 0.0,
+       Eigen::Vector3d::UnitX(),
+       Eigen::Vector3d(0.67823715223773817, 0.089804753037272977, -0.91782948522156127), false},
+      {8, 1.1468052427196029, -0.15604425682085571, 0.21246093527152868, 0.39405268411169531,
+       3.14 * 0.31114831222125483,
+       Eigen::Vector3d(-0.7860720412475003, -0.96104024595649118, -0.92020969579310163),
+       Eigen::Vector3d(-0.20687707084095963, 0.57972259468631138, -0.011607688672445438), true}};
+  for (std::uint64_t seed = 0; seed < 300; ++seed) ropes.push_back(random_straight_part_rope(seed));
+  for (size_t k = 0; k < ropes.size(); ++k) {
+    const KnotReport report =
+        analyse_rope_on_bar(rope_looping_over_a_straight_part(ropes[k]), {0, 0, -5}, {1, 0, 0});
+    EXPECT_EQ(report.determinant, 1) << "rope " << k;
+  }
 }
 
 TEST(OpenRope, OverhandReportIsKnotted) {

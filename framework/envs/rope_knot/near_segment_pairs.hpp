@@ -1,0 +1,20 @@
+// Pairs of segments of a planar polygon that lie within a distance of each other, found
+// through a uniform grid instead of testing all pairs.
+#pragma once
+
+#include <Eigen/Core>
+#include <functional>
+#include <vector>
+
+namespace corrmp {
+
+// Calls visit(i, j), i < j, once for every pair of segments i = (flat[i], flat[i + 1]) and j
+// of the closed polygon `flat` (the last vertex joins the first) whose bounding boxes, each
+// grown by reach / 2 on every side, overlap: every pair that crosses or whose segments come
+// within `reach` of each other is visited, and in a polygon whose segments are short beside its
+// size few others are. Neighbouring segments are visited too; the order of calls is fixed by
+// the input. Requires reach >= 0 and finite coordinates.
+void for_each_near_segment_pair(const std::vector<Eigen::Vector2d>& flat, double reach,
+                                const std::function<void(int, int)>& visit);
+
+}  // namespace corrmp

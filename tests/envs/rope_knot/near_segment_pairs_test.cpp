@@ -1,0 +1,67 @@
+// The grid's pair search against all pairs on random polygons.
+#include "envs/rope_knot/near_segment_pairs.hpp"
+
+#include <gtest/gtest.h>
+
+#include <algorithm>
+#include <cmath>
+#include <set>
+#include <utility>
+
+#include "core/seeds.hpp"
+
+namespace corrmp {
+namespace {
+
+using Pairs = std::set<std::pair<int, int>>;
+
+double box_gap(const Eigen::Vector2d& a0, const Eigen::Vector2d& a1, const Eigen::Vector2d& b0,
+               const Eigen::Vector2d& b1) {
+  const Eigen::Vector2d lo = a0.cwiseMin(a1).cwiseMax(b0.cwiseMin(b1));
+  const Eigen::Vector2d hi = a0.cwiseMax(a1).cwiseMin(b0.cwiseMax(b1));
+  return (lo - hi).maxCoeff();  // > 0 along an axis where the boxes are apart
+}
+
+void expect_exactly_the_near_pairs(const std::vector<Eigen::Vector2d>& flat, double reach) {
+  const int n = static_cast<int>(flat.size());
+  Pairs visited;
+  int calls = 0;
+  for_each_near_segment_pair(flat, reach, [&](int i, int j) {
+    ASSERT_LT(i, j);
+    visited.insert({i, j});
+    ++calls;
+  });
+  EXPECT_EQ(calls, static_cast<int>(visited.size())) << "a pair visited twice";
+  Pairs expected;
+  for (int i = 0; i < n; ++i) {
+    for (int j = i + 1; j < n; ++j) {
+      if (box_gap(flat[i], flat[(i + 1) % n], flat[j], flat[(j + 1) % n]) <= reach) {
+        expected.insert({i, j});
+      }
+    }
+  }
+  EXPECT_EQ(visited, expected);
+}
+
+TEST(NearSegmentPairs, VisitsEveryPairWhoseGrownBoxesOverlapOnce) {
+  Rng rng(5);
+  for (int trial = 0; trial < 20; ++trial) {
+    const int n = 3 + static_cast<int>(rng.uniform_int(0, 300));
+    std::vector<Eigen::Vector2d> walk{{0, 0}};
+    for (int k = 1; k < n; ++k) {
+      walk.push_back(walk.back() + Eigen::Vector2d(rng.normal(), rng.normal()) * 0.1);
+    }
+    // A few long segments, as a rope closed far away has.
+    if (trial % 2 == 0) walk.push_back({40.0, 40.0});
+    for (double reach : {0.0, 0.01, 0.3, 5.0}) expect_exactly_the_near_pairs(walk, reach);
+  }
+}
+
+TEST(NearSegmentPairs, HandlesFlatAndTinyPolygons) {
+  expect_exactly_the_near_pairs({{0, 0}, {1, 0}, {2, 0}, {3, 0}}, 0.1);
+  expect_exactly_the_near_pairs({{0, 0}, {0, 1e-9}, {0, 2e-9}}, 0.0);
+  expect_exactly_the_near_pairs({{0, 0}, {1, 1}}, 0.5);
+}
+
+}  // namespace
+}  // namespace corrmp
