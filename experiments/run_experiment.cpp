@@ -26,10 +26,12 @@
 #include "experiment/pipeline.hpp"
 #include "experiment/registries.hpp"
 #include "store/result_store.hpp"
+#include "sweep/config_fingerprint.hpp"
 #include "sweep/sweep_axes.hpp"
 #include "sweep/sweep_definition.hpp"
 #include "sweep/sweep_driver.hpp"
 #include "sweep/sweep_manifest.hpp"
+#include "sweep/sweep_names.hpp"
 #include "sweep/sweep_records.hpp"
 
 namespace {
@@ -179,12 +181,20 @@ int main(int argc, char** argv) {
         std::cerr << "run_experiment: --emit takes 'slurm DIR'\n";
         return 2;
       }
+      if (emit[1].empty()) {
+        std::cerr << "run_experiment: --emit slurm: the folder is empty\n";
+        return 2;
+      }
       sweep_options.emit_dir = emit[1];
     }
     if (!resume.empty()) {
       if (!config_path.empty() || multirun || print_config) {
         std::cerr << "run_experiment: --resume takes no config, overrides, -m or --print-config: "
                      "the sweep's jobs are in the database\n";
+        return 2;
+      }
+      if (const std::string problem = corrmp::sweep_id_problem(resume); !problem.empty()) {
+        std::cerr << "run_experiment: --resume: " << problem << "\n";
         return 2;
       }
       if (!std::filesystem::is_regular_file(options.db_path)) {
@@ -200,6 +210,7 @@ int main(int argc, char** argv) {
       }
       corrmp::install_interrupt_handlers();
       sweep_options.executable = this_executable();
+      corrmp::check_base_configs_unchanged(*sweep);
       corrmp::check_sweep_jobs(*sweep, registries);
       return corrmp::drive_sweep(*sweep, sweep_options);
     }
@@ -209,8 +220,9 @@ int main(int argc, char** argv) {
     }
     if (multirun || corrmp::is_sweep_file(config_path) || !emit.empty() ||
         sweep_options.launcher != "local") {
-      const corrmp::Sweep sweep = corrmp::define_sweep(config_path, overrides);
+      corrmp::Sweep sweep = corrmp::define_sweep(config_path, overrides);
       corrmp::check_sweep_jobs(sweep, registries);
+      corrmp::fingerprint_base_configs(sweep);
       if (print_config) {
         std::cout << corrmp::manifest_yaml(sweep);
         return 0;

@@ -17,6 +17,7 @@ StopWhen::~StopWhen() { t_stop = saved_; }
 void install_interrupt_handlers() {
   std::signal(SIGINT, on_signal);
   std::signal(SIGTERM, on_signal);
+  std::signal(SIGHUP, on_signal);  // a closed terminal: stop cleanly as for SIGTERM
 }
 
 bool interrupt_requested() { return g_signal != 0 || (t_stop != nullptr && t_stop->load()); }

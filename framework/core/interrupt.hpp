@@ -1,5 +1,5 @@
-// Ctrl-C and SIGTERM: long loops call check_interrupt(), which throws
-// Interrupted, so the run is marked 'interrupted' in the database cleanly.
+// Ctrl-C, SIGTERM and SIGHUP (a closed terminal): long loops call check_interrupt(), which
+// throws Interrupted, so the run is marked 'interrupted' in the database cleanly.
 #pragma once
 
 #include <atomic>

@@ -41,8 +41,10 @@ bool mark_run_json_interrupted(const std::string& path, const std::string& finis
   return true;
 }
 
-int mark_interrupted_runs(ResultStore& store) {
-  const auto marked = store.mark_interrupted_runs();
+namespace {
+
+// Writes what the database now says of `marked` into their folders' run.json.
+void mark_run_jsons(const std::vector<ResultStore::InterruptedRun>& marked) {
   for (const auto& run : marked) {
     if (run.out_dir.empty()) continue;
     const std::string path = (std::filesystem::path(run.out_dir) / "run.json").string();
@@ -53,6 +55,19 @@ int mark_interrupted_runs(ResultStore& store) {
       spdlog::warn("run {}: cannot mark {} interrupted: {}", run.id, path, e.what());
     }
   }
+}
+
+}  // namespace
+
+int mark_interrupted_runs(ResultStore& store) {
+  const auto marked = store.mark_interrupted_runs();
+  mark_run_jsons(marked);
+  return static_cast<int>(marked.size());
+}
+
+int mark_job_runs_interrupted(ResultStore& store, const std::string& sweep_id, int job_index) {
+  const auto marked = store.mark_job_runs_interrupted(sweep_id, job_index);
+  mark_run_jsons(marked);
   return static_cast<int>(marked.size());
 }
 

@@ -218,6 +218,28 @@ std::vector<ResultStore::InterruptedRun> ResultStore::mark_interrupted_runs() {
   return marked;
 }
 
+std::vector<ResultStore::InterruptedRun> ResultStore::mark_job_runs_interrupted(
+    const std::string& sweep_id, int job_index) {
+  std::vector<InterruptedRun> marked;
+  transaction([&] {
+    marked.clear();  // a retried transaction starts again
+    Statement running(db_,
+                      "SELECT id, coalesce(out_dir, '') FROM runs WHERE sweep_id = ? AND "
+                      "job_index = ? AND status = 'running'");
+    running.bind(1, sweep_id).bind(2, int64_t{job_index});
+    while (running.step()) {
+      marked.push_back({running.column_int(0), running.column_text(1), utc_timestamp(),
+                        "an earlier attempt at this sweep job ended without finishing"});
+    }
+    Statement mark(db_,
+                   "UPDATE runs SET status = 'interrupted', finished_at = ?, failure = ? "
+                   "WHERE id = ?");
+    for (const InterruptedRun& run : marked)
+      mark.bind(1, run.finished_at).bind(2, run.failure).bind(3, run.id).run();
+  });
+  return marked;
+}
+
 int64_t ResultStore::begin_run(const RunRecord& run) {
   int64_t id = 0;
   transaction([&] {

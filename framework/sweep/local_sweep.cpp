@@ -24,6 +24,7 @@
 #include "core/progress.hpp"
 #include "experiment/interrupted_runs.hpp"
 #include "store/result_store.hpp"
+#include "sweep/sweep_folders.hpp"
 #include "sweep/sweep_manifest.hpp"
 #include "sweep/sweep_records.hpp"
 
@@ -129,10 +130,11 @@ SweepOutcome run_sweep_locally(const Sweep& sweep, const LocalSweepOptions& opti
     // The database first: one that cannot be used is refused (StoreError) before anything
     // is written, and opening it makes the folder the lock goes in.
     ResultStore store(options.db_path);
-    // Beside the database: two drivers of one sweep into one database are refused whatever
-    // their --out.
-    lock.emplace(options.db_path + ".sweep-" + sweep.id + ".lock");
-    fs::create_directories(dir);
+    // Beside the database's real file (symlinks, '..' and relative paths resolved, as SQLite
+    // resolves them for its own files): two drivers of one sweep into one database are refused
+    // whatever the paths they were given and their --out.
+    lock.emplace(fs::canonical(options.db_path).string() + ".sweep-" + sweep.id + ".lock");
+    make_sweep_folder(dir, "--out");
     write_manifest(manifest.string(), sweep);
     mark_interrupted_runs(store);
     record_sweep(store, sweep);

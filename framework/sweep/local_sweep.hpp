@@ -31,7 +31,8 @@ struct SweepOutcome {
 
 // Runs the sweep's pending jobs. A database that cannot be used is refused
 // (StoreError) before anything is written; a second driver of the same sweep
-// is refused (a lock file beside the database, removed when the driver ends). Ctrl-C stops the
+// is refused (a lock file beside the database's real file, whatever path names it, removed
+// when the driver ends). Ctrl-C stops the
 // running jobs (they mark their runs interrupted); a driver killed outright takes its jobs with it
 // (they are killed when their parent dies), and --resume reruns them.
 SweepOutcome run_sweep_locally(const Sweep& sweep, const LocalSweepOptions& options);

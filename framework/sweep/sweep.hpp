@@ -52,6 +52,9 @@ struct Sweep {
   std::vector<SweepJob> jobs;
   SlurmResources slurm;
   SweepFilePlaces file_places;
+  // Each base config (as the jobs name it) with the hash of its values when the sweep started
+  // (config_fingerprint.hpp); empty for a sweep recorded before hashes were kept.
+  std::vector<std::pair<std::string, std::string>> config_hashes;
 };
 
 }  // namespace corrmp

@@ -24,12 +24,21 @@ using AxisGroup = std::vector<SweepAxis>;
 // or holds a comma outside brackets and quotes.
 bool is_sweep_assignment(const std::string& assignment);
 
-// The values of `text`: `range(stop)`, `range(start, stop[, step])` (integers,
-// stop excluded), `choice(a, b, ...)`, `a,b,c`, or a single value. Throws
-// ConfigError (naming `where` and `key`) for an empty axis, a malformed or
-// empty range, a zero step or an empty value.
+// The values of `text`: `range(stop)`, `range(start, stop[, step])` (64-bit
+// integers, stop excluded), `choice(a, b, ...)`, `a,b,c`, or a single value.
+// Throws ConfigError (naming `where` and `key`) for an empty axis, a malformed or
+// empty range, a zero step, a range stepping beyond the 64-bit integers or past
+// 100000 values, an empty value or an unmatched quote.
 std::vector<std::string> parse_axis_values(const std::string& text, const SourceLocation& where,
                                            const std::string& key);
+
+// A sweep's fixed command-line assignment: throws ConfigError for an unmatched quote
+// in its value, which an axis's syntax would read otherwise (`it's,b`).
+void check_fixed_assignment(const std::string& assignment);
+
+// Throws ConfigError when `configs` crossed with `groups` make more than 100000 jobs;
+// checked as each group is read, so that no more values are made than a sweep can run.
+void check_job_count(std::size_t configs, const std::vector<AxisGroup>& groups);
 
 // `key=values` from the command line, as one axis.
 SweepAxis parse_axis_assignment(const std::string& assignment);

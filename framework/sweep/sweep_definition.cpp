@@ -3,8 +3,6 @@
 
 #include <fmt/format.h>
 
-#include <algorithm>
-#include <cctype>
 #include <ctime>
 #include <filesystem>
 #include <random>
@@ -13,6 +11,7 @@
 #include "core/config/config_reader.hpp"
 #include "sweep/slurm_launcher.hpp"
 #include "sweep/sweep_axes.hpp"
+#include "sweep/sweep_names.hpp"
 
 namespace corrmp {
 
@@ -62,16 +61,29 @@ void check_slurm_values(const ConfigNode& section, const SlurmResources& resourc
   }
 }
 
-std::string axis_text(const ConfigNode& value, const std::string& path) {
-  if (value.is_scalar()) return value.text();
+// One YAML value as the text of an override's value: a plain scalar as written, anything
+// else (a quoted string, a list, a map) as flow YAML that reads back as the same value.
+std::string override_value(const ConfigNode& value) {
+  if (value.is_scalar() && !value.quoted()) return value.text();
+  std::string text = value.to_yaml_string(true);
+  while (!text.empty() && text.back() == '\n') text.pop_back();
+  return text;
+}
+
+// An axis of a sweep file: a list is its values, one per item, taken as they are; a scalar is
+// read as on the command line (a,b,c, range(), choice()).
+std::vector<std::string> axis_values(const ConfigNode& value, const std::string& path) {
+  if (value.is_scalar()) return parse_axis_values(value.text(), value.where(), path);
   if (value.is_sequence()) {
-    std::string joined;
+    std::vector<std::string> values;
     for (const auto& item : value.items()) {
-      if (!item.is_scalar()) throw ConfigError(item.where(), path, "expected scalar values");
-      joined += (joined.empty() ? "" : ",") + item.text();
+      if (item.is_null() || (item.is_scalar() && !item.quoted() && item.text().empty())) {
+        throw ConfigError(item.where(), path, "empty value");
+      }
+      values.push_back(override_value(item));
     }
-    if (joined.empty()) throw ConfigError(value.where(), path, "the axis has no values");
-    return joined;
+    if (values.empty()) throw ConfigError(value.where(), path, "the axis has no values");
+    return values;
   }
   throw ConfigError(value.where(), path, "expected values: a list, a,b,c, range() or choice()");
 }
@@ -84,23 +96,30 @@ std::vector<SweepAxis> read_axes(const ConfigNode& map, const std::string& path)
     SweepAxis axis;
     axis.key = entry.key;
     axis.where = entry.value.where();
-    axis.values = parse_axis_values(axis_text(entry.value, axis_path), axis.where, axis_path);
+    axis.values = axis_values(entry.value, axis_path);
     axes.push_back(std::move(axis));
   }
   return axes;
 }
 
-// The name becomes part of file names and the sweep id.
-void check_name(const std::string& name, const SourceLocation& where) {
-  const bool valid =
-      !name.empty() && name[0] != '.' && name.size() <= 100 &&
-      std::all_of(name.begin(), name.end(), [](char c) {
-        return std::isalnum(static_cast<unsigned char>(c)) || c == '_' || c == '-' || c == '.';
-      });
-  if (!valid) {
-    throw ConfigError(
-        where, "sweep.name",
-        fmt::format("'{}' is not a valid name: use letters, digits, '_', '-', '.'", name));
+// A fixed override that an axis would replace, wholly (the same key, or one under the axis's
+// key) is refused: its value would be dropped without a word. One that the axes refine
+// (`policy.network={...}` fixed, `policy.network.width` swept) keeps its other values.
+void check_no_axis_replaces(const std::string& assignment, const SourceLocation& where,
+                            const std::string& path, const std::vector<AxisGroup>& groups) {
+  const auto equals = assignment.find('=');
+  if (equals == std::string::npos) return;  // the config loader names what is wrong
+  std::string key = assignment.substr(0, equals);
+  key.erase(0, key.find_first_not_of(" \t"));
+  key.erase(key.find_last_not_of(" \t") + 1);
+  for (const auto& group : groups) {
+    for (const auto& axis : group) {
+      if (key != axis.key && key.rfind(axis.key + ".", 0) != 0) continue;
+      throw ConfigError(where, path.empty() ? key : path + ": " + key,
+                        fmt::format("the sweep also varies {} ({}), whose values would replace "
+                                    "this one: drop one of them",
+                                    axis.key, axis.where.str()));
+    }
   }
 }
 
@@ -165,13 +184,16 @@ Sweep define_sweep(const std::string& config_path, const std::vector<std::string
             {text.substr(0, text.find('=')), item.where(), "sweep.overrides"});
       }
     }
-    check_name(read.name, section.find("name")->where());
+    if (const std::string problem = sweep_name_problem(read.name); !problem.empty()) {
+      throw ConfigError(section.find("name")->where(), "sweep.name", problem);
+    }
     sweep.name = read.name;
     sweep.slurm = slurm.resources;
     if (const ConfigNode* axes = section.find("axes")) {
       for (auto& axis : read_axes(*axes, "sweep.axes")) {
         sweep.file_places.axes.push_back({axis.key, axis.where, "sweep.axes." + axis.key});
         groups.push_back({std::move(axis)});
+        check_job_count(configs.size(), groups);
       }
     }
     if (const ConfigNode* zip = section.find("zip")) {
@@ -179,15 +201,32 @@ Sweep define_sweep(const std::string& config_path, const std::vector<std::string
       for (const auto& axis : group)
         sweep.file_places.axes.push_back({axis.key, axis.where, "sweep.zip." + axis.key});
       if (!group.empty()) groups.push_back(std::move(group));
+      check_job_count(configs.size(), groups);
     }
   } else {
     sweep.name = fs::path(config_path).stem().string();
+    if (const std::string problem = sweep_name_problem(sweep.name); !problem.empty()) {
+      throw ConfigError(SourceLocation{config_path, 0, 0}, "",
+                        "the file's name names the sweep, but " + problem +
+                            ": rename the file, or run it from a sweep file with a name");
+    }
   }
+  const std::size_t file_fixed = fixed.size();
   for (const auto& assignment : assignments) {
     if (is_sweep_assignment(assignment)) {
       groups.push_back({parse_axis_assignment(assignment)});
+      check_job_count(configs.size(), groups);
     } else {
+      check_fixed_assignment(assignment);
       fixed.push_back(assignment);
+    }
+  }
+  for (std::size_t i = 0; i < fixed.size(); ++i) {
+    if (i < file_fixed) {
+      const SweepKeyOrigin& origin = sweep.file_places.overrides.at(i);
+      check_no_axis_replaces(fixed[i], origin.where, origin.path, groups);
+    } else {
+      check_no_axis_replaces(fixed[i], override_location(fixed[i]), "", groups);
     }
   }
   sweep.jobs = expand_jobs(configs, fixed, groups);

@@ -12,10 +12,13 @@
 #include "core/config/config_error.hpp"
 #include "core/config/config_loader.hpp"
 #include "experiment/experiment.hpp"
+#include "experiment/interrupted_runs.hpp"
 #include "store/store_merge.hpp"
+#include "sweep/config_fingerprint.hpp"
 #include "sweep/local_sweep.hpp"
 #include "sweep/shell_words.hpp"
 #include "sweep/slurm_launcher.hpp"
+#include "sweep/sweep_folders.hpp"
 #include "sweep/sweep_manifest.hpp"
 #include "sweep/sweep_records.hpp"
 
@@ -59,9 +62,10 @@ std::optional<ConfigError> in_sweep_file(const Sweep& sweep, const SweepJob& job
   return ConfigError(origin->where, path, error.reason() + context);
 }
 
-// Writes the manifest, the array script and the folders its tasks write to.
+// Writes the manifest, the array script and the folders its tasks write to; `option` is the
+// command-line option that gave `dir`, for an error about it.
 std::string write_slurm_files(const Sweep& sweep, const SweepDriverOptions& options,
-                              const fs::path& dir) {
+                              const fs::path& dir, const std::string& option) {
   SlurmPaths paths;
   paths.run_experiment = options.executable;
   paths.manifest = (dir / "manifest.yaml").string();
@@ -76,8 +80,9 @@ std::string write_slurm_files(const Sweep& sweep, const SweepDriverOptions& opti
   } catch (const std::invalid_argument& e) {
     throw ConfigError(e.what());
   }
-  fs::create_directories(dir / "shards");
-  fs::create_directories(dir / "logs");
+  make_sweep_folder(dir, option);
+  make_sweep_folder(dir / "shards", option);
+  make_sweep_folder(dir / "logs", option);
   write_manifest(paths.manifest, sweep);
   const fs::path script = dir / "sweep.sbatch";
   std::ofstream(script) << text;
@@ -89,20 +94,26 @@ int run_on_slurm(const Sweep& sweep, const SweepDriverOptions& options) {
   const bool emit_only = !options.emit_dir.empty();
   const fs::path dir =
       emit_only ? fs::path(options.emit_dir) : fs::path(options.run.out_dir) / "sweeps" / sweep.id;
-  const std::string script = write_slurm_files(sweep, options, dir);
+  // What this invocation makes goes again if the array is not submitted.
+  NewFolderCleanup cleanup(dir);
+  const std::string script =
+      write_slurm_files(sweep, options, dir, emit_only ? "--emit slurm" : "--out");
+  // Printed commands are quoted for bash; the shards' pattern is left for it to expand.
+  const std::string merge_command =
+      fmt::format("run_experiment merge {}/*.sqlite --db {}", shell_word((dir / "shards").string()),
+                  shell_word(options.run.db_path));
   if (emit_only) {
-    fmt::print(
-        "wrote {} ({} array tasks); submit with: sbatch {}\nthen merge: run_experiment merge "
-        "{}/*.sqlite --db {}\n",
-        script, sweep.jobs.size(), script, (dir / "shards").string(), options.run.db_path);
+    cleanup.keep();
+    fmt::print("wrote {} ({} array tasks); submit with: sbatch {}\nthen merge: {}\n", script,
+               sweep.jobs.size(), shell_word(script), merge_command);
     return 0;
   }
   const SlurmSubmission submission = submit_slurm(script, options.wait);
+  cleanup.keep();
   fmt::print("sweep {}: submitted Slurm job array {} ({} tasks)\n", sweep.id, submission.job_id,
              sweep.jobs.size());
   if (!options.wait) {
-    fmt::print("when it has finished: run_experiment merge {}/*.sqlite --db {}\n",
-               (dir / "shards").string(), options.run.db_path);
+    fmt::print("when it has finished: {}\n", merge_command);
     return 0;
   }
   std::vector<std::string> shards;
@@ -159,10 +170,11 @@ int drive_sweep(const Sweep& sweep, const SweepDriverOptions& options) {
       "runs in {} (report --sweep {}), logs in {}\n",
       sweep.id, outcome.completed, outcome.failed, outcome.interrupted,
       outcome.not_started > 0 ? fmt::format(", {} not started", outcome.not_started) : "",
-      outcome.skipped, options.run.db_path, sweep.id, outcome.directory);
+      outcome.skipped, options.run.db_path, shell_word(sweep.id), outcome.directory);
   if (outcome.interrupted > 0 || outcome.not_started > 0) {
-    fmt::print("resume with: run_experiment --resume {} --db {} --out {}{}{}\n", sweep.id,
-               shell_word(options.run.db_path), shell_word(options.run.out_dir),
+    fmt::print("resume with: run_experiment --resume {} --db {} --out {}{}{}\n",
+               shell_word(sweep.id), shell_word(options.run.db_path),
+               shell_word(options.run.out_dir),
                local.parallel_jobs > 1 ? fmt::format(" -j {}", local.parallel_jobs) : "",
                local.use_cache ? "" : " --no-cache");
     return 130;
@@ -178,6 +190,7 @@ int run_sweep_job(const std::string& manifest, int index, const RunOptions& opti
         fmt::format("{}: no job {} (the sweep has {})", manifest, index, sweep.jobs.size()));
   }
   const SweepJob& job = sweep.jobs[static_cast<size_t>(index)];
+  check_base_config_unchanged(sweep, job.config_path);
   {
     ResultStore store(options.db_path);
     record_sweep(store, sweep);
@@ -187,7 +200,8 @@ int run_sweep_job(const std::string& manifest, int index, const RunOptions& opti
     }
     // One process runs a job at a time (the local driver's lock; one array
     // task per shard), so an earlier attempt still 'running' was killed (a
-    // Slurm time limit, a lost node) on whatever host it ran.
+    // driver killed, a Slurm time limit, a lost node) on whatever host it ran:
+    // marked so in the database and its run.json.
     mark_job_runs_interrupted(store, sweep.id, index);
   }
   Experiment experiment = load_experiment(job.config_path, job.overrides, registries);

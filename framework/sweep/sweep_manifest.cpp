@@ -10,7 +10,9 @@
 #include <stdexcept>
 
 #include "core/atomic_file.hpp"
+#include "core/config/config_error.hpp"
 #include "core/json_writer.hpp"
+#include "sweep/sweep_names.hpp"
 
 namespace corrmp {
 
@@ -23,6 +25,14 @@ std::string manifest_yaml(const Sweep& sweep) {
       << YAML::Value << sweep.slurm.time << YAML::Key << "memory" << YAML::Value
       << sweep.slurm.memory << YAML::Key << "partition" << YAML::Value << sweep.slurm.partition
       << YAML::EndMap;
+  if (!sweep.config_hashes.empty()) {
+    out << YAML::Key << "config_hashes" << YAML::Value << YAML::BeginSeq;
+    for (const auto& [path, hash] : sweep.config_hashes) {
+      out << YAML::Flow << YAML::BeginSeq << YAML::DoubleQuoted << path << YAML::DoubleQuoted
+          << hash << YAML::EndSeq;
+    }
+    out << YAML::EndSeq;
+  }
   out << YAML::Key << "jobs" << YAML::Value << YAML::BeginSeq;
   for (const auto& job : sweep.jobs) {
     out << YAML::BeginMap << YAML::Key << "index" << YAML::Value << job.index << YAML::Key
@@ -41,9 +51,9 @@ std::string manifest_yaml(const Sweep& sweep) {
 }
 
 Sweep parse_manifest(const std::string& text, const std::string& origin) {
+  Sweep sweep;
   try {
     const YAML::Node root = YAML::Load(text);
-    Sweep sweep;
     sweep.id = root["id"].as<std::string>();
     sweep.name = root["name"].as<std::string>();
     const YAML::Node slurm = root["slurm"];
@@ -51,6 +61,9 @@ Sweep parse_manifest(const std::string& text, const std::string& origin) {
     sweep.slurm.time = slurm["time"].as<std::string>();
     sweep.slurm.memory = slurm["memory"].as<std::string>();
     sweep.slurm.partition = slurm["partition"].as<std::string>();
+    for (const auto& pair : root["config_hashes"]) {
+      sweep.config_hashes.emplace_back(pair[0].as<std::string>(), pair[1].as<std::string>());
+    }
     for (const auto& node : root["jobs"]) {
       SweepJob job;
       job.index = node["index"].as<int>();
@@ -64,10 +77,15 @@ Sweep parse_manifest(const std::string& text, const std::string& origin) {
       }
       sweep.jobs.push_back(std::move(job));
     }
-    return sweep;
   } catch (const std::exception& e) {
     throw std::runtime_error(fmt::format("{}: not a sweep manifest: {}", origin, e.what()));
   }
+  // The id names folders and files: one from a manifest written elsewhere (a merged shard, a
+  // file given to --sweep-job) is checked like any input.
+  if (const std::string problem = sweep_id_problem(sweep.id); !problem.empty()) {
+    throw ConfigError(fmt::format("{}: id: {}", origin, problem));
+  }
+  return sweep;
 }
 
 void write_manifest(const std::string& path, const Sweep& sweep) {

@@ -13,7 +13,8 @@ namespace corrmp {
 
 std::string manifest_yaml(const Sweep& sweep);
 
-// Throws std::runtime_error naming `origin` when the text is not a manifest.
+// Throws std::runtime_error naming `origin` when the text is not a manifest, and
+// ConfigError when its id is not a safe name (sweep_names.hpp).
 Sweep parse_manifest(const std::string& text, const std::string& origin);
 
 // Written to a temporary name, then renamed into place.

@@ -1,6 +1,7 @@
 // A sweep in the result database (sweep_records.hpp).
 #include "sweep/sweep_records.hpp"
 
+#include "core/config/config_error.hpp"
 #include "store/statement.hpp"
 #include "sweep/sweep_manifest.hpp"
 
@@ -24,20 +25,12 @@ std::optional<Sweep> stored_sweep(ResultStore& store, const std::string& id) {
   Statement query(store.handle(), "SELECT manifest FROM sweeps WHERE id = ?");
   query.bind(1, id);
   if (!query.step()) return std::nullopt;
-  return parse_manifest(query.column_text(0), store.path() + ": sweep " + id);
-}
-
-int mark_job_runs_interrupted(ResultStore& store, const std::string& sweep_id, int job_index) {
-  int marked = 0;
-  store.transaction([&] {
-    Statement update(store.handle(),
-                     "UPDATE runs SET status = 'interrupted', finished_at = ?, failure = 'an "
-                     "earlier attempt at this sweep job ended without finishing' WHERE sweep_id = "
-                     "? AND job_index = ? AND status = 'running'");
-    update.bind(1, utc_timestamp()).bind(2, sweep_id).bind(3, int64_t{job_index}).run();
-    marked = sqlite3_changes(store.handle());
-  });
-  return marked;
+  const std::string origin = store.path() + ": sweep " + id;
+  Sweep sweep = parse_manifest(query.column_text(0), origin);
+  if (sweep.id != id) {
+    throw ConfigError(origin + ": its manifest is of another sweep, '" + sweep.id + "'");
+  }
+  return sweep;
 }
 
 std::set<int> completed_jobs(ResultStore& store, const std::string& sweep_id) {

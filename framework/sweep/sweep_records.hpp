@@ -15,11 +15,9 @@ namespace corrmp {
 // Inserts the sweep's row unless it is there already.
 void record_sweep(ResultStore& store, const Sweep& sweep);
 
-// The sweep recorded under `id`, or nothing.
+// The sweep recorded under `id`, or nothing. Throws ConfigError when its manifest names
+// another sweep or an unsafe id.
 std::optional<Sweep> stored_sweep(ResultStore& store, const std::string& id);
-
-// Marks the job's runs still 'running' as interrupted; returns how many.
-int mark_job_runs_interrupted(ResultStore& store, const std::string& sweep_id, int job_index);
 
 // The indices of the jobs that have a completed run.
 std::set<int> completed_jobs(ResultStore& store, const std::string& sweep_id);

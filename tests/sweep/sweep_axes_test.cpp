@@ -46,6 +46,36 @@ TEST(SweepAxes, RefusesEmptyAndMalformedAxes) {
   EXPECT_NE(error_of("").find("empty value"), std::string::npos);
 }
 
+// Values are counted and made without stepping past the ends of the 64-bit integers.
+TEST(SweepAxes, RangesAtTheEdgesOfTheIntegersNeverOverflow) {
+  EXPECT_EQ(values("range(9223372036854775805, 9223372036854775807)"),
+            (std::vector<std::string>{"9223372036854775805", "9223372036854775806"}));
+  EXPECT_EQ(values("range(-9223372036854775808, -9223372036854775806)"),
+            (std::vector<std::string>{"-9223372036854775808", "-9223372036854775807"}));
+  EXPECT_EQ(values("range(9000000000000000000, -9000000000000000000, -6000000000000000000)"),
+            (std::vector<std::string>{"9000000000000000000", "3000000000000000000",
+                                      "-3000000000000000000"}));
+  EXPECT_NE(error_of("range(9223372036854775800, 9223372036854775807, 5)")
+                .find("beyond the 64-bit integers"),
+            std::string::npos);
+  EXPECT_NE(error_of("range(-9223372036854775800, -9223372036854775808, -5)")
+                .find("beyond the 64-bit integers"),
+            std::string::npos);
+  EXPECT_NE(error_of("range(-9223372036854775808, 9223372036854775807)").find("more than"),
+            std::string::npos);
+  EXPECT_NE(error_of("range(9223372036854775807, -9223372036854775808, -1)").find("more than"),
+            std::string::npos);
+  EXPECT_NE(error_of("range(0, 9223372036854775808)").find("not an integer"), std::string::npos);
+}
+
+TEST(SweepAxes, AnUnmatchedQuoteIsAnError) {
+  EXPECT_NE(error_of("it's,b").find("unmatched ' in \"it's,b\""), std::string::npos);
+  EXPECT_NE(error_of("\"a,b").find("unmatched \""), std::string::npos);
+  EXPECT_EQ(values("\"it's\",b"), (std::vector<std::string>{"\"it's\"", "b"}));
+  EXPECT_EQ(values("'it''s',b"), (std::vector<std::string>{"'it''s'", "b"}));
+  EXPECT_EQ(values(R"("a\"b",c)"), (std::vector<std::string>{R"("a\"b")", "c"}));
+}
+
 TEST(SweepAxes, TellsSweepingAssignmentsFromPlainOnes) {
   EXPECT_TRUE(is_sweep_assignment("seed=0,1"));
   EXPECT_TRUE(is_sweep_assignment("seed=range(0,5)"));
@@ -145,8 +175,10 @@ TEST(SweepManifest, RoundTripsEveryField) {
   sweep.jobs = expand_jobs(
       {"/a b/c.yaml"}, {"name='x: y'"},
       {{SweepAxis{"seed", {"0", "1"}, {}}}, {SweepAxis{"eye", {"[1, 2, 3]", "\"q\""}, {}}}});
+  sweep.config_hashes = {{"/a b/c.yaml", "0123456789abcdef"}};
   const Sweep back = parse_manifest(manifest_yaml(sweep), "test");
   EXPECT_EQ(back.id, sweep.id);
+  EXPECT_EQ(back.config_hashes, sweep.config_hashes);
   EXPECT_EQ(back.slurm.partition, "gpu");
   EXPECT_EQ(back.slurm.cpus_per_task, 8);
   ASSERT_EQ(back.jobs.size(), 4u);
@@ -157,6 +189,10 @@ TEST(SweepManifest, RoundTripsEveryField) {
   }
   EXPECT_EQ(axes_json(back.jobs[3]), R"({"seed":"1","eye":"\"q\""})");
   EXPECT_THROW(parse_manifest("jobs: 3", "bad"), std::runtime_error);
+  sweep.id = "../s-1";
+  EXPECT_EQ(testing::config_error_of([&] { parse_manifest(manifest_yaml(sweep), "m.yaml"); }),
+            "m.yaml: id: '../s-1' is not a valid sweep id (up to 128 letters, digits, '_', '-', "
+            "'.', not starting with '.')");
 }
 
 }  // namespace

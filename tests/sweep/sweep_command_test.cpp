@@ -1,5 +1,6 @@
 // run_experiment's sweeps end to end (docs/sweeps.md): bad axes refused before
 // anything is written, every job recorded with its sweep and axes, a sweep
+// stopped by Ctrl-C or a closed terminal (SIGHUP) with its runs recorded, a sweep
 // killed with kill -9 resumed to exactly one completed run per job, and a
 // Slurm round trip through a real single-node Slurm (skipped where Slurm
 // cannot start).
@@ -19,46 +20,18 @@
 #include "store/result_store.hpp"
 #include "support/child_process.hpp"
 #include "support/local_slurm.hpp"
+#include "sweep/shell_words.hpp"
+#include "sweep/sweep_command_support.hpp"
 
 namespace corrmp {
 namespace {
 
+using testing::files_named;
+using testing::kTiny;
+using testing::Outcome;
+using testing::read_text;
+using testing::run;
 using testing::TempDir;
-
-const std::string kTiny =
-    "experiment: {name: tiny}\nseed: 3\ndemonstrations: {type: curve_family, train: 4, "
-    "validation: 2, time_steps: 10}\npolicy:\n  type: segmented_cnmp\n  network: {width: 8}\n"
-    "  training: {updates: 200, validate_every: 50}\n";
-
-struct Outcome {
-  int exit_code;
-  std::string out;
-};
-
-std::string read_text(const std::filesystem::path& path) {
-  std::ifstream in(path);
-  std::stringstream text;
-  text << in.rdbuf();
-  return text.str();
-}
-
-Outcome run(const TempDir& dir, const std::string& args, const std::string& db = "") {
-  const std::string log = dir.file("output.txt");
-  const std::string command = std::string(RUN_EXPERIMENT_BIN) + " " + args + " --db " +
-                              (db.empty() ? dir.file("r.sqlite") : db) + " --out " +
-                              dir.file("runs") + " >" + log + " 2>&1";
-  const int status = std::system(command.c_str());
-  return {WIFEXITED(status) ? WEXITSTATUS(status) : -1, read_text(log)};
-}
-
-// The files under `folder` whose names contain `part`.
-int files_named(const std::filesystem::path& folder, const std::string& part) {
-  int count = 0;
-  for (const auto& entry : std::filesystem::recursive_directory_iterator(folder)) {
-    if (entry.path().filename().string().find(part) != std::string::npos) ++count;
-  }
-  return count;
-}
 
 TEST(SweepCommand, BadAxesExitTwoWithOneLineAndWriteNothing) {
   TempDir dir;
@@ -243,6 +216,71 @@ TEST(SweepCommand, CtrlCStopsTheJobsAndCountsTheOnesNeverStarted) {
   ResultStore store(dir.file("r.sqlite"));
   EXPECT_EQ(store.query_int("SELECT count(*) FROM runs"), 2);
   EXPECT_EQ(store.query_int("SELECT count(*) FROM runs WHERE status = 'interrupted'"), 2);
+}
+
+// A closed terminal (SIGHUP to the driver and its jobs, one process group) stops the sweep as
+// Ctrl-C does: the runs recorded interrupted, the lock removed, exit 130, and a resume command
+// that, pasted into bash, runs with the very paths given.
+TEST(SweepCommand, AHangupStopsTheSweepLikeCtrlC) {
+  TempDir dir;
+  const std::string config = dir.write("tiny.yaml", testing::slow_tiny());
+  const std::string db = dir.file("db $(touch pwned)/r.sqlite"), runs = dir.file("runs");
+  const std::string log = dir.file("driver.txt");
+  const pid_t driver = ::fork();
+  if (driver == 0) {
+    ::setpgid(0, 0);
+    const int out = ::open(log.c_str(), O_WRONLY | O_CREAT | O_TRUNC, 0644);
+    ::dup2(out, STDOUT_FILENO);
+    ::dup2(out, STDERR_FILENO);
+    ::execl(RUN_EXPERIMENT_BIN, RUN_EXPERIMENT_BIN, config.c_str(), "-m", "seed=range(0,3)", "-j",
+            "2", "--db", db.c_str(), "--out", runs.c_str(), static_cast<char*>(nullptr));
+    ::_exit(127);
+  }
+  ::setpgid(driver, driver);
+  const auto deadline = std::chrono::steady_clock::now() + std::chrono::seconds(60);
+  int64_t running = 0;
+  while (running < 2 && std::chrono::steady_clock::now() < deadline) {
+    running =
+        testing::wait_until_positive(db, "SELECT count(*) FROM runs WHERE status = 'running'");
+    if (running < 2) std::this_thread::sleep_for(std::chrono::milliseconds(100));
+  }
+  ASSERT_EQ(running, 2);
+  ::kill(-driver, SIGHUP);
+  int status = 0;
+  const auto stop_deadline = std::chrono::steady_clock::now() + std::chrono::seconds(60);
+  while (::waitpid(driver, &status, WNOHANG) == 0) {
+    if (std::chrono::steady_clock::now() > stop_deadline) {
+      ::kill(-driver, SIGKILL);
+      ::waitpid(driver, &status, 0);
+      FAIL() << "the sweep did not stop within 60 s of SIGHUP";
+    }
+    std::this_thread::sleep_for(std::chrono::milliseconds(50));
+  }
+  const std::string out = read_text(log);
+  EXPECT_EQ(WIFEXITED(status) ? WEXITSTATUS(status) : 128 + WTERMSIG(status), 130) << out;
+  EXPECT_NE(out.find("0 completed, 0 failed, 2 interrupted, 1 not started"), std::string::npos)
+      << out;
+  EXPECT_EQ(files_named(dir.file("db $(touch pwned)"), ".lock"), 0);
+  std::string id;
+  {
+    ResultStore store(db);
+    EXPECT_EQ(store.query_int("SELECT count(*) FROM runs WHERE status = 'interrupted'"), 2);
+    EXPECT_EQ(store.query_int("SELECT count(*) FROM runs WHERE status = 'running'"), 0);
+    id = store.query_text("SELECT id FROM sweeps");
+  }
+  const std::string prefix = "resume with: ";
+  const size_t at = out.find(prefix);
+  ASSERT_NE(at, std::string::npos) << out;
+  const std::string command =
+      out.substr(at + prefix.size(), out.find('\n', at) - at - prefix.size());
+  const std::string script =
+      dir.write("paste.sh", "cd " + shell_quoted(dir.path().string()) +
+                                "\nrun_experiment() { printf '%s\\n' \"$@\"; }\n" + command + "\n");
+  const std::string printed = dir.file("printed.txt");
+  ASSERT_EQ(std::system(("bash " + script + " > " + printed).c_str()), 0);
+  EXPECT_EQ(read_text(printed),
+            "--resume\n" + id + "\n--db\n" + db + "\n--out\n" + runs + "\n-j\n2\n");
+  EXPECT_FALSE(std::filesystem::exists(dir.file("pwned")));
 }
 
 // merge checks every shard before it merges any or makes the target.
