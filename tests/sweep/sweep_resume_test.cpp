@@ -137,6 +137,12 @@ TEST(SweepResume, AnEarlierAttemptMarkedInterruptedByItsJobSaysSoInItsRunJson) {
   ASSERT_GT(testing::wait_until_positive(
                 db, "SELECT count(*) FROM runs WHERE id = 1 AND status = 'interrupted'"),
             0);
+  // The database is updated first, the run.json right after it.
+  const auto json_deadline = std::chrono::steady_clock::now() + std::chrono::seconds(30);
+  while (read_text(run_json).find("\"status\": \"interrupted\"") == std::string::npos &&
+         std::chrono::steady_clock::now() < json_deadline) {
+    std::this_thread::sleep_for(std::chrono::milliseconds(50));
+  }
   const std::string text = read_text(run_json);
   EXPECT_NE(text.find("\"status\": \"interrupted\""), std::string::npos) << text;
   EXPECT_NE(text.find("an earlier attempt at this sweep job ended without finishing"),
