@@ -1,4 +1,4 @@
-// The process's thread budget and a parallel loop over independent tasks (issue 10: independent
+// The process's thread budget and a parallel loop over independent tasks (independent
 // networks trained concurrently, demonstrations collected in parallel). The budget is how many
 // threads the parallel stages of this process may keep busy at once: the cores of the machine
 // by default, fewer when several runs share them (run_experiment -j). One exception: with a

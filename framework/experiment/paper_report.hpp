@@ -1,4 +1,4 @@
-// The paper-reproduction report (issue 10): the paper's Table I (action
+// The paper-reproduction report: the paper's Table I (action
 // choice, decision match and task success per expected correction) and Table
 // II (cor-MP and post-MP mean and max errors) for the corridor PC, AE and Mono
 // experiments, each cell the mean across runs (seeds) with its 95% Student t

@@ -1,4 +1,4 @@
-// Comparison of groups of recorded runs (issue 10, results across seeds): runs
+// Comparison of groups of recorded runs (results across seeds): runs
 // grouped by experiment or by setting values (a sweep's axes), each group's
 // main metrics as the mean across its runs (seeds) with a 95% Student t
 // interval and its pooled task success with a Wilson interval, then the

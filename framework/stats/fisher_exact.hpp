@@ -1,5 +1,5 @@
 // Fisher's exact test on a 2x2 table, two-sided: compares two groups' success
-// counts with the trials pooled (comparison reports, issue 10).
+// counts with the trials pooled (comparison reports).
 #pragma once
 
 namespace corrmp {

@@ -1,7 +1,7 @@
 // The mean of a metric across runs (seeds) with its confidence interval from
 // Student's t with n - 1 degrees of freedom, and the difference of two such
 // means with Welch's interval: what the comparison and reproduction reports
-// print for every metric (issue 10: results across seeds).
+// print for every metric across seeds.
 #pragma once
 
 #include <vector>

@@ -151,7 +151,7 @@ TEST(CorridorExpert, TheScenariosCollectedDoNotDependOnTheTempoVariation) {
   EXPECT_EQ(scenarios[0], scenarios[1]);
 }
 
-// Parallel collection (issue 10): each attempt draws from its own stream and
+// Parallel collection: each attempt draws from its own stream and
 // each thread demonstrates in its own clone of the environment, so the split,
 // images included, is the same for any thread budget.
 TEST(CorridorExpert, CollectsTheSameDemonstrationsWhateverTheThreadBudget) {

@@ -1,4 +1,4 @@
-// Issue 11's hostile inputs to run_experiment that reach past the YAML loader: sizes whose
+// Hostile inputs to run_experiment that reach past the YAML loader: sizes whose
 // products overflowed or exhausted memory, names that became paths, lists that were silently
 // accepted. Each ends in exit 2 with one line naming the key, before any database exists.
 #include <gtest/gtest.h>

@@ -1,5 +1,5 @@
 // Tests of policies/segmented_cnmp.hpp: the segment networks train concurrently, and the trained
-// networks are bit-identical whatever the thread budget (issue 10).
+// networks are bit-identical whatever the thread budget.
 #include "policies/segmented_cnmp.hpp"
 
 #include <gtest/gtest.h>

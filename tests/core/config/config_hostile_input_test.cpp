@@ -2,7 +2,7 @@
 // that are not regular files, text that is not UTF-8, unbounded input (alias
 // bombs, huge files, deep nesting), include cycles, duplicate keys and
 // out-of-range list indexes. Each must end as one ConfigError line naming
-// where, never a crash, a hang or another exception (issue 11).
+// where, never a crash, a hang or another exception.
 #include <gtest/gtest.h>
 #include <sys/stat.h>
 

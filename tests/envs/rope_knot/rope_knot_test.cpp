@@ -111,7 +111,7 @@ TEST(RopeKnot, ATrialIsDeterministic) {
   EXPECT_EQ(runs[0], runs[1]);  // bit for bit
 }
 
-// Parallel collection (issue 10): the same split, images included, for any
+// Parallel collection: the same split, images included, for any
 // thread budget; each thread demonstrates in its own clone.
 TEST(RopeExpert, CollectsTheSameDemonstrationsWhateverTheThreadBudget) {
   RopeExpertParams params;
