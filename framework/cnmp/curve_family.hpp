@@ -24,7 +24,9 @@ struct CurveFamilyParams {
     f("time_steps", time_steps, "points per curve", in_range(2, 100000));
     f("context_min", context_min, "smallest context value drawn");
     f("context_max", context_max, "largest context value drawn");
-    f("noise", noise, "standard deviation of Gaussian noise added to y", at_least(0.0));
+    f("noise", noise,
+      "standard deviation of Gaussian noise added to y (whose values lie in about [-1, 1.3])",
+      in_range(0.0, 1000.0));
   }
 };
 
