@@ -54,9 +54,11 @@ TEST(HostileConfigs, AbsurdSizesNamesAndListsAreConfigErrorsBeforeAnythingIsWrit
        "environment.pre_points: value 2000000000 is out of range"},
       {config("corridor_pc.yaml") + " policy.training.batch_size=2000000000",
        "policy.training.batch_size: value 2000000000 is out of range"},
-      // Noise that makes the demonstrations non-finite.
+      // Noise or contexts that make the demonstrations non-finite.
       {config("curves_demo.yaml") + " demonstrations.noise=1e308",
        "demonstrations.noise: value 1e308 is out of range"},
+      {config("curves_demo.yaml") + " demonstrations.context_max=1e308",
+       "demonstrations.context_max: value 1e308 is out of range"},
       // Values that would make a simulation run for ever.
       {config("rope_color.yaml") + " environment.settle_time=1e9",
        "environment.settle_time: value 1e9 is out of range: must be in [0, 10]"},
