@@ -14,6 +14,7 @@
 #include "command_line.hpp"
 
 #include "cnmp/cnmp_model.hpp"
+#include "core/path_checks.hpp"
 #include "nn/model_file.hpp"
 
 namespace {
@@ -81,6 +82,13 @@ int main(int argc, char** argv) {
   app.add_option("--out", out, "CSV file (default: standard output)");
   app.footer(kExamples);
   if (const auto exit_code = corrmp::parse_command_line(app, argc, argv)) return *exit_code;
+  if (!out.empty() && corrmp::same_file(out, model_path)) {
+    std::cerr << fmt::format(
+        "predict_cnmp: --out {}: is the model file (--model {}): write the predictions to another "
+        "file\n",
+        out, model_path);
+    return 2;
+  }
   try {
     auto model = corrmp::CnmpModel::load(model_path);
     const auto& a = model->architecture();

@@ -17,10 +17,12 @@
 #include <filesystem>
 #include <fstream>
 #include <iostream>
+#include <map>
 #include <set>
 
 #include "command_line.hpp"
 #include "core/config/did_you_mean.hpp"
+#include "core/path_checks.hpp"
 #include "experiment/paper_report.hpp"
 #include "experiment/reproduction_figures.hpp"
 #include "experiment/run_comparison.hpp"
@@ -89,6 +91,32 @@ std::string unrecorded_metric(const std::vector<corrmp::RunSummary>& runs,
   return "";
 }
 
+// "no run in 'DB' matches", or, when only runs that did not complete match (a database of
+// failed runs must not look empty): "no completed run in 'DB' matches, but 2 failed and 1
+// interrupted do: --all shows them".
+std::string no_run_matches(corrmp::ResultStore& store, corrmp::ReportQuery query,
+                           const std::string& db_path) {
+  std::vector<std::string> counts;
+  int total = 0;
+  if (query.completed_only) {
+    query.completed_only = false;
+    std::map<std::string, int> by_status;
+    for (const auto& run : corrmp::load_run_summaries(store, query)) ++by_status[run.status];
+    for (const char* status : {"failed", "interrupted", "running"}) {
+      if (by_status[status] == 0) continue;
+      counts.push_back(std::to_string(by_status[status]) + " " + status);
+      total += by_status[status];
+    }
+  }
+  if (counts.empty()) return "no run in '" + db_path + "' matches";
+  std::string listed = counts.front();
+  for (size_t i = 1; i < counts.size(); ++i) {
+    listed += (i + 1 == counts.size() ? " and " : ", ") + counts[i];
+  }
+  return "no completed run in '" + db_path + "' matches, but " + listed +
+         (total == 1 ? " does" : " do") + ": --all shows them";
+}
+
 // A 0-byte regular file: what `touch` leaves, a database with nothing recorded yet.
 bool is_empty_file(const std::string& path) {
   std::error_code error;
@@ -153,6 +181,11 @@ int main(int argc, char** argv) {
   if (!compare && !reproduction && plot_success.empty() && !out_dir.empty()) {
     return usage_error("--out needs --compare or --reproduction");
   }
+  if (!out_dir.empty()) {
+    if (const std::string in_the_way = corrmp::file_in_the_way(out_dir); !in_the_way.empty()) {
+      return usage_error("--out " + out_dir + ": " + in_the_way);
+    }
+  }
   if (!std::filesystem::exists(db_path)) {
     return usage_error("no result database at '" + db_path + "' (see --db)");
   }
@@ -180,9 +213,9 @@ int main(int argc, char** argv) {
       if (const std::string missing = missing_selection(query, runs); !missing.empty()) {
         return usage_error(missing);
       }
-      if (runs.empty()) return usage_error("no run in '" + db_path + "' matches");
+      if (runs.empty()) return usage_error(no_run_matches(store, query, db_path));
     } else if (runs.empty()) {
-      std::cerr << "report: no run in '" << db_path << "' matches\n";
+      std::cerr << "report: " << no_run_matches(store, query, db_path) << "\n";
       return 1;
     }
 
@@ -246,6 +279,10 @@ int main(int argc, char** argv) {
   } catch (const corrmp::StoreError& e) {
     // A database that cannot be used (damaged, a directory, not SQLite) is bad input.
     std::cerr << "report: " << e.what() << "\n";
+    return 2;
+  } catch (const std::filesystem::filesystem_error& e) {
+    // An output folder or file that cannot be made (no permission, say) is bad input.
+    std::cerr << "report: " << e.path1().string() << ": " << e.code().message() << "\n";
     return 2;
   } catch (const std::exception& e) {
     std::cerr << "report: " << e.what() << "\n";

@@ -1,18 +1,22 @@
 // train_cnmp: trains a CNMP on a researcher's own demonstrations (.npy or CSV),
 // no simulation involved, and writes a model file for predict_cnmp.
 // Paper, Section III-A; the training parameters of Section IV are the defaults.
+#include <fmt/format.h>
 #include <spdlog/spdlog.h>
 #include <CLI/CLI.hpp>
 
+#include <algorithm>
 #include <iostream>
 
 #include "command_line.hpp"
 
+#include "cnmp/cnmp_memory.hpp"
 #include "cnmp/cnmp_trainer.hpp"
 #include "cnmp/raw_trajectory.hpp"
 #include "cnmp/trajectory_dataset.hpp"
 #include "core/interrupt.hpp"
 #include "core/logging.hpp"
+#include "core/path_checks.hpp"
 
 namespace {
 
@@ -24,6 +28,33 @@ Examples:
 Columns of .npy files are called c0, c1, ...; CSV files name them in their header row.
 Time is normalised to [0, 1] per demonstration (the step index when --time is not given).
 )";
+
+// The model must not overwrite a demonstration file (the same file under any spelling or link).
+void refuse_an_input_as_output(const std::vector<std::string>& files, const std::string& out) {
+  for (const auto& file : files) {
+    if (corrmp::same_file(file, out)) {
+      throw corrmp::DataError(fmt::format(
+          "--out {}: is the demonstration file {} (--data): write the model to another file", out,
+          file));
+    }
+  }
+}
+
+// Sizes whose training cannot fit in memory are refused naming the option to change, as
+// run_experiment refuses them at load.
+void refuse_what_cannot_fit(const corrmp::CnmpArchitecture& architecture,
+                            const corrmp::CnmpTrainingParams& training,
+                            const std::vector<corrmp::CnmpTrajectory>& trajectories) {
+  int64_t longest = 0;
+  for (const auto& t : trajectories) longest = std::max<int64_t>(longest, t.x.rows());
+  const auto needs = corrmp::cnmp_training_needs(architecture, training, longest);
+  const corrmp::MemoryBudget budget = corrmp::usable_memory();
+  if (const auto largest = corrmp::largest_need_beyond(needs, budget)) {
+    const std::string option =
+        needs[*largest].key == std::string(corrmp::kNetworkKey) ? "--width" : "--batch";
+    throw corrmp::DataError(option + ": " + corrmp::memory_refusal(needs, *largest, budget));
+  }
+}
 
 }  // namespace
 
@@ -84,7 +115,10 @@ int main(int argc, char** argv) {
   corrmp::setup_logging(quiet);
   corrmp::install_interrupt_handlers();
   try {
-    auto trajectories = corrmp::select_columns(corrmp::read_trajectory_files(data), columns);
+    corrmp::check_column_roles(columns, {"--time", "--x", "--y", "--context"});
+    const std::vector<std::string> files = corrmp::list_trajectory_files(data);
+    refuse_an_input_as_output(files, out);
+    auto trajectories = corrmp::select_columns(corrmp::read_trajectory_files(files), columns);
     corrmp::Rng rng = corrmp::SeedTree(seed).stream("train_cnmp");
     for (size_t i = trajectories.size(); i > 1; --i) {
       std::swap(trajectories[i - 1], trajectories[rng.uniform_int(0, i - 1)]);
@@ -98,6 +132,7 @@ int main(int argc, char** argv) {
     architecture.d_x = static_cast<int>(train.front().x.cols());
     architecture.d_y = static_cast<int>(train.front().y.cols());
     architecture.d_context = static_cast<int>(train.front().context.size());
+    refuse_what_cannot_fit(architecture, training, trajectories);
     corrmp::CnmpModel model(architecture, corrmp::SeedTree(seed).seed_for("init"));
     spdlog::info("{} training and {} validation demonstrations; CNMP with {} parameters",
                  train.size(), validation.size(), model.network().parameter_count());

@@ -208,19 +208,4 @@ TrainingReport train_cnmp(CnmpModel& model, const std::vector<CnmpTrajectory>& t
   return report;
 }
 
-double cnmp_training_bytes(const CnmpArchitecture& architecture, const CnmpTrainingParams& params,
-                           int64_t longest) {
-  const double batch = params.batch_size;
-  const double observations = longest > 1 ? std::min<double>(params.max_observations, longest - 1)
-                                          : params.max_observations;
-  const double targets =
-      longest > 0 ? std::min<double>(params.max_targets, longest) : params.max_targets;
-  const double rows =
-      batch * (observations * architecture.encoder_layers + targets * architecture.decoder_layers);
-  const double activations = 3.0 * rows * architecture.width * sizeof(float);
-  const double weights = 4.0 * static_cast<double>(cnmp_parameter_count(architecture)) *
-                         sizeof(float);  // weights, gradients, Adam's two moments
-  return activations + weights;
-}
-
 }  // namespace corrmp

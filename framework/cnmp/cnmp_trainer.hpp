@@ -110,12 +110,6 @@ double scheduled_learning_rate(const CnmpTrainingParams& params, int64_t update)
 // Mean Euclidean distance between rows of two equally shaped matrices.
 double mean_row_distance(const Eigen::MatrixXd& a, const Eigen::MatrixXd& b);
 
-// Peak memory of training with these sizes, in bytes (a load-time estimate: batches,
-// activations and their gradients, weights with Adam's moments). `longest` is the longest
-// trajectory when known (it caps the points per demonstration), else 0.
-double cnmp_training_bytes(const CnmpArchitecture& architecture, const CnmpTrainingParams& params,
-                           int64_t longest);
-
 // Fits the normalisers to `train` and trains the model. Without validation
 // data the final weights are kept. `label` names the progress bar.
 TrainingReport train_cnmp(CnmpModel& model, const std::vector<CnmpTrajectory>& train,

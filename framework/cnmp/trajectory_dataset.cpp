@@ -5,6 +5,7 @@
 
 #include <algorithm>
 #include <filesystem>
+#include <map>
 
 #include "cnmp/csv_reader.hpp"
 #include "cnmp/npy_reader.hpp"
@@ -30,7 +31,7 @@ int column_index(const RawTrajectory& raw, const std::string& name) {
 
 }  // namespace
 
-std::vector<RawTrajectory> read_trajectory_files(const std::vector<std::string>& paths) {
+std::vector<std::string> list_trajectory_files(const std::vector<std::string>& paths) {
   std::vector<std::string> files;
   for (const auto& path : paths) {
     if (fs::is_directory(path)) {
@@ -51,6 +52,11 @@ std::vector<RawTrajectory> read_trajectory_files(const std::vector<std::string>&
       files.push_back(path);
     }
   }
+  return files;
+}
+
+std::vector<RawTrajectory> read_trajectory_files(const std::vector<std::string>& paths) {
+  const std::vector<std::string> files = list_trajectory_files(paths);
   std::vector<RawTrajectory> raw;
   std::vector<std::string> csv_files;
   for (const auto& file : files) {
@@ -64,9 +70,27 @@ std::vector<RawTrajectory> read_trajectory_files(const std::vector<std::string>&
   return raw;
 }
 
+void check_column_roles(const TrajectoryColumns& columns, const ColumnRoleNames& names) {
+  std::map<std::string, const std::string*> role_of;  // column -> the role that named it first
+  const auto claim = [&](const std::string& column, const std::string& role) {
+    const auto [it, first] = role_of.emplace(column, &role);
+    if (first) return;
+    throw DataError(*it->second == role
+                        ? fmt::format("{}: column '{}' is named twice", role, column)
+                        : fmt::format("{}: column '{}' is also named by {}; each column has one "
+                                      "role",
+                                      role, column, *it->second));
+  };
+  if (!columns.time.empty()) claim(columns.time, names.time);
+  for (const auto& column : columns.inputs) claim(column, names.inputs);
+  for (const auto& column : columns.outputs) claim(column, names.outputs);
+  for (const auto& column : columns.context) claim(column, names.context);
+}
+
 std::vector<CnmpTrajectory> select_columns(const std::vector<RawTrajectory>& raw,
                                            const TrajectoryColumns& columns) {
   if (columns.outputs.empty()) throw DataError("no output (y) columns chosen");
+  check_column_roles(columns);
   std::vector<CnmpTrajectory> out;
   for (const RawTrajectory& r : raw) {
     const Eigen::Index steps = r.values.rows();

@@ -2,7 +2,10 @@
 #include "core/memory_need.hpp"
 
 #include <fmt/format.h>
+#include <sys/resource.h>
 #include <unistd.h>
+
+#include <algorithm>
 
 namespace corrmp {
 
@@ -21,6 +24,43 @@ double physical_memory_bytes() {
   const long page_size = sysconf(_SC_PAGE_SIZE);
   if (pages <= 0 || page_size <= 0) return 0.0;
   return static_cast<double>(pages) * static_cast<double>(page_size);
+}
+
+MemoryBudget usable_memory() {
+  MemoryBudget budget{physical_memory_bytes(), false};
+  for (const int resource : {RLIMIT_AS, RLIMIT_DATA}) {
+    rlimit limit{};
+    if (getrlimit(resource, &limit) != 0 || limit.rlim_cur == RLIM_INFINITY) continue;
+    const double bytes = static_cast<double>(limit.rlim_cur);
+    if (budget.bytes <= 0.0 || bytes < budget.bytes) {
+      budget = {bytes, true};
+    }
+  }
+  return budget;
+}
+
+std::optional<size_t> largest_need_beyond(const std::vector<MemoryNeed>& needs,
+                                          const MemoryBudget& budget) {
+  if (needs.empty() || budget.bytes <= 0.0) return std::nullopt;
+  double total = 0.0;
+  for (const auto& need : needs) total += need.bytes;
+  if (total <= kMemoryShare * budget.bytes) return std::nullopt;
+  return static_cast<size_t>(
+      std::max_element(needs.begin(), needs.end(),
+                       [](const auto& a, const auto& b) { return a.bytes < b.bytes; }) -
+      needs.begin());
+}
+
+std::string memory_refusal(const std::vector<MemoryNeed>& needs, size_t largest,
+                           const MemoryBudget& budget) {
+  double total = 0.0;
+  for (const auto& need : needs) total += need.bytes;
+  const std::string available =
+      budget.limited ? fmt::format("this process may use {} (ulimit)", format_bytes(budget.bytes))
+                     : fmt::format("this machine has {}", format_bytes(budget.bytes));
+  return fmt::format("the declared sizes need about {} of memory, {} of it for {}; {}: reduce them",
+                     format_bytes(total), format_bytes(needs[largest].bytes), needs[largest].what,
+                     available);
 }
 
 }  // namespace corrmp

@@ -4,6 +4,8 @@
 // "Configs".
 #pragma once
 
+#include <cstddef>
+#include <optional>
 #include <string>
 #include <vector>
 
@@ -20,5 +22,26 @@ std::string format_bytes(double bytes);
 
 // The machine's physical memory in bytes (0 when unknown).
 double physical_memory_bytes();
+
+// The memory this process may use: the machine's, or less when a limit on the process's
+// address space or data (ulimit -v, -d) is lower. `bytes` is 0 when unknown.
+struct MemoryBudget {
+  double bytes = 0.0;
+  bool limited = false;  // set by a process limit, not by the machine's memory
+};
+MemoryBudget usable_memory();
+
+// The share of the usable memory that declared sizes may plan to take.
+constexpr double kMemoryShare = 0.75;
+
+// The index of the largest of `needs` when together they exceed kMemoryShare of `budget`;
+// nothing when they fit or the budget is unknown.
+std::optional<size_t> largest_need_beyond(const std::vector<MemoryNeed>& needs,
+                                          const MemoryBudget& budget);
+
+// "the declared sizes need about 24.0 GiB of memory, 23.5 GiB of it for <what of the largest>;
+// this machine has 23.4 GiB: reduce them" (or "this process may use 7.6 GiB (ulimit)").
+std::string memory_refusal(const std::vector<MemoryNeed>& needs, size_t largest,
+                           const MemoryBudget& budget);
 
 }  // namespace corrmp

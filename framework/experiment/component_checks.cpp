@@ -12,9 +12,6 @@ namespace corrmp {
 
 namespace {
 
-// The share of the machine's memory a run may plan to use.
-constexpr double kMemoryShare = 0.75;
-
 bool contains(const std::vector<std::string>& names, const std::string& name) {
   return std::find(names.begin(), names.end(), name) != names.end();
 }
@@ -167,8 +164,8 @@ struct LocatedNeed {
   const ComponentSpec* spec;
 };
 
-// The declared sizes must fit in this machine's memory: refused at load, naming the parameter
-// behind the largest need, rather than failing mid-run (or taking the machine down).
+// The declared sizes must fit in the memory this process may use: refused at load, naming the
+// parameter behind the largest need, rather than failing mid-run (or taking the machine down).
 void check_memory(const Experiment& e) {
   std::vector<LocatedNeed> needs;
   const Environment* environment = e.environment.get();
@@ -184,21 +181,16 @@ void check_memory(const Experiment& e) {
   if (e.policy) {
     for (auto& need : e.policy->memory_needs(longest)) needs.push_back({need, &*e.config.policy});
   }
-  if (needs.empty()) return;
-  double total = 0.0;
-  for (const auto& n : needs) total += n.need.bytes;
-  const double available = physical_memory_bytes();
-  if (available <= 0.0 || total <= kMemoryShare * available) return;
-  const auto largest =
-      std::max_element(needs.begin(), needs.end(),
-                       [](const auto& a, const auto& b) { return a.need.bytes < b.need.bytes; });
-  const ConfigNode& section = *largest->spec->node;
-  throw ConfigError(stated_location(section, largest->need.key, section.find("type")->where()),
-                    largest->spec->path + "." + largest->need.key,
-                    fmt::format("the declared sizes need about {} of memory, {} of it for {}; "
-                                "this machine has {}: reduce them",
-                                format_bytes(total), format_bytes(largest->need.bytes),
-                                largest->need.what, format_bytes(available)));
+  std::vector<MemoryNeed> plain;
+  for (const auto& n : needs) plain.push_back(n.need);
+  const MemoryBudget budget = usable_memory();
+  const std::optional<size_t> largest = largest_need_beyond(plain, budget);
+  if (!largest) return;
+  const LocatedNeed& culprit = needs[*largest];
+  const ConfigNode& section = *culprit.spec->node;
+  throw ConfigError(stated_location(section, culprit.need.key, section.find("type")->where()),
+                    culprit.spec->path + "." + culprit.need.key,
+                    memory_refusal(plain, *largest, budget));
 }
 
 }  // namespace

@@ -7,6 +7,7 @@
 #include <algorithm>
 #include <filesystem>
 
+#include "cnmp/cnmp_memory.hpp"
 #include "core/parameter_error.hpp"
 #include "policies/segmented_cnmp.hpp"
 
@@ -18,10 +19,7 @@ MonolithicCnmp::MonolithicCnmp(const MonolithicCnmpParams& params, uint64_t seed
 }
 
 std::vector<MemoryNeed> MonolithicCnmp::memory_needs(int64_t longest) const {
-  return {{cnmp_training_bytes(params_.network, params_.training, longest), "training.batch_size",
-           fmt::format("training the CNMP (batch_size {}, max_observations {}, max_targets {})",
-                       params_.training.batch_size, params_.training.max_observations,
-                       params_.training.max_targets)}};
+  return cnmp_training_needs(params_.network, params_.training, longest);
 }
 
 std::vector<PolicyTrainingSummary> MonolithicCnmp::fit(const std::vector<Demonstration>& train,

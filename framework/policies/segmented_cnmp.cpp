@@ -7,6 +7,7 @@
 #include <filesystem>
 #include <set>
 
+#include "cnmp/cnmp_memory.hpp"
 #include "core/parameter_error.hpp"
 #include "core/thread_budget.hpp"
 
@@ -83,14 +84,13 @@ std::vector<PolicyTrainingSummary> SegmentedCnmp::fit(const std::vector<Demonstr
 }
 
 std::vector<MemoryNeed> SegmentedCnmp::memory_needs(int64_t longest) const {
-  const double each = cnmp_training_bytes(params_.network, params_.training, longest);
-  const double segments = static_cast<double>(params_.segments.size());
-  return {{each * segments, "training.batch_size",
-           fmt::format("training {} CNMPs (batch_size {}, max_observations {}, max_targets {}, "
-                       "width {})",
-                       params_.segments.size(), params_.training.batch_size,
-                       params_.training.max_observations, params_.training.max_targets,
-                       params_.network.width)}};
+  std::vector<MemoryNeed> needs = cnmp_training_needs(params_.network, params_.training, longest);
+  const size_t segments = params_.segments.size();
+  for (auto& need : needs) {
+    need.bytes *= static_cast<double>(segments);
+    if (segments > 1) need.what += fmt::format(", for each of the {} CNMPs", segments);
+  }
+  return needs;
 }
 
 std::vector<std::string> SegmentedCnmp::segments() const {

@@ -10,6 +10,7 @@
 #include <ctime>
 #include <filesystem>
 
+#include "core/path_checks.hpp"
 #include "store/statement.hpp"
 
 namespace corrmp {
@@ -107,7 +108,15 @@ ResultStore::ResultStore(const std::string& path, int busy_timeout_ms) : path_(p
   }
   const bool existed_empty = fs::is_regular_file(status) && fs::file_size(path, ec) == 0 && !ec;
   const auto parent = fs::path(path).parent_path();
-  if (!parent.empty()) fs::create_directories(parent);
+  if (!parent.empty()) {
+    std::error_code made;
+    fs::create_directories(parent, made);
+    if (made) {
+      const std::string in_the_way = file_in_the_way(parent.string());
+      throw StoreError(fmt::format("{}: cannot make its folder: {}", path,
+                                   in_the_way.empty() ? made.message() : in_the_way));
+    }
+  }
   if (sqlite3_open_v2(path.c_str(), &db_, SQLITE_OPEN_READWRITE | SQLITE_OPEN_CREATE, nullptr) !=
       SQLITE_OK) {
     const std::string message = db_ ? sqlite3_errmsg(db_) : "out of memory";

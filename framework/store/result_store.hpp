@@ -57,8 +57,8 @@ class ResultStore {
   // Opens (creating the file and its folder if needed) and migrates the schema.
   // An existing 0-byte file becomes a new database with a one-line warning.
   // Throws StoreError naming the path for a directory, garbage bytes or a
-  // damaged or truncated database ("not a usable result database"), before
-  // anything is written to it.
+  // damaged or truncated database ("not a usable result database"), or a
+  // folder that cannot be made (a file in the way), before anything is written.
   explicit ResultStore(const std::string& path, int busy_timeout_ms = 60000);
   ~ResultStore();
   ResultStore(const ResultStore&) = delete;

@@ -44,6 +44,11 @@ Statement& Statement::bind_null(int index) {
   return *this;
 }
 
+Statement& Statement::bind_column(int index, const Statement& from, int column) {
+  check(sqlite3_bind_value(stmt_, index, sqlite3_column_value(from.stmt_, column)), "bind");
+  return *this;
+}
+
 bool Statement::step() {
   const int code = sqlite3_step(stmt_);
   check(code, "step");

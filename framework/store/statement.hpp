@@ -19,6 +19,9 @@ class Statement {
   Statement& bind(int index, int64_t value);
   Statement& bind(int index, double value);
   Statement& bind_null(int index);
+  // Binds column `column` of `from`'s current row as it is (any type, NULL too); `from` may
+  // belong to another connection.
+  Statement& bind_column(int index, const Statement& from, int column);
 
   // Steps once; true when a row is available.
   bool step();

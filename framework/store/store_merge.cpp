@@ -3,117 +3,182 @@
 
 #include <fmt/format.h>
 
-#include <filesystem>
+#include <algorithm>
 
+#include "core/path_checks.hpp"
+#include "store/shard_reader.hpp"
 #include "store/statement.hpp"
 
 namespace corrmp {
 
 namespace {
 
-constexpr const char* kRunColumns =
-    "experiment, config, config_hash, seed, status, started_at, finished_at, git_commit, "
-    "git_dirty, out_dir, host, pid, failure, uid, sweep_id, job_index, axes";
+// The runs' columns copied as they are (the uid is handled apart).
+const std::vector<std::string> kRunColumns = {
+    "experiment",  "config",     "config_hash", "seed",    "status", "started_at",
+    "finished_at", "git_commit", "git_dirty",   "out_dir", "host",   "pid",
+    "failure",     "sweep_id",   "job_index",   "axes"};
+const std::vector<std::string> kTrialColumns = {
+    "trial", "scenario", "expected_action", "chosen_action", "success", "failure", "details"};
+const std::vector<std::string> kMetricColumns = {"name", "value"};
+const std::vector<std::string> kSweepColumns = {"id", "name", "created_at", "jobs", "manifest"};
 
-// Detaches the shard whatever happens.
-class Attached {
- public:
-  Attached(ResultStore& store, const std::string& path) : store_(store) {
-    Statement attach(store.handle(), "ATTACH DATABASE ? AS shard");
-    attach.bind(1, path).run();
+// The shard's columns for a SELECT list, NULL for those its (older) schema lacks.
+std::string select_list(const ShardReader& shard, const std::string& table,
+                        const std::vector<std::string>& columns) {
+  std::vector<std::string> listed;
+  for (const auto& column : columns) listed.push_back(shard.column_or_null(table, column));
+  return fmt::format("{}", fmt::join(listed, ", "));
+}
+
+std::string insert_sql(const std::string& table, const std::vector<std::string>& columns,
+                       const std::string& leading_column = "") {
+  std::string names = leading_column.empty() ? "" : leading_column + ", ";
+  std::string values = leading_column.empty() ? "" : "?, ";
+  for (size_t i = 0; i < columns.size(); ++i) {
+    names += (i > 0 ? ", " : "") + columns[i];
+    values += i > 0 ? ", ?" : "?";
   }
-  ~Attached() { sqlite3_exec(store_.handle(), "DETACH DATABASE shard", nullptr, nullptr, nullptr); }
-  Attached(const Attached&) = delete;
-  Attached& operator=(const Attached&) = delete;
+  return fmt::format("INSERT INTO {} ({}) VALUES ({})", table, names, values);
+}
 
- private:
-  ResultStore& store_;
-};
-
-}  // namespace
-
-void check_shard(const std::string& shard) {
-  if (!std::filesystem::is_regular_file(shard)) {
-    throw StoreError(fmt::format("{}: no such database file", shard));
+uint64_t fnv1a(const std::string& bytes, uint64_t hash) {
+  for (const unsigned char c : bytes) {
+    hash ^= c;
+    hash *= 0x100000001b3ULL;
   }
-  sqlite3* db = nullptr;
-  int code = sqlite3_open_v2(shard.c_str(), &db, SQLITE_OPEN_READONLY, nullptr);
-  int64_t version = 0, tables = 0;
-  // One row: the schema version and how many of the tables every version has are there.
-  const char* query_text =
-      "SELECT (SELECT user_version FROM pragma_user_version), (SELECT count(*) FROM "
-      "sqlite_master WHERE type = 'table' AND name IN ('runs', 'trials', 'metrics'))";
-  if (code == SQLITE_OK) {
-    sqlite3_stmt* query = nullptr;
-    code = sqlite3_prepare_v2(db, query_text, -1, &query, nullptr);
-    if (code == SQLITE_OK && (code = sqlite3_step(query)) == SQLITE_ROW) {
-      version = sqlite3_column_int64(query, 0);
-      tables = sqlite3_column_int64(query, 1);
-      code = SQLITE_OK;
+  return hash;
+}
+
+// A uid for a run of a shard written before runs had one: a hash of the fields that tell runs
+// apart, so that merging the shard again finds the run already there.
+std::string derived_uid(const Statement& run, const std::vector<int>& fields) {
+  std::string key;
+  for (int field : fields) {
+    const std::string text = run.column_text(field);
+    key += std::to_string(text.size()) + ":" + text + ";";
+  }
+  return fmt::format("{:016x}{:016x}", fnv1a(key, 0xcbf29ce484222325ULL),
+                     fnv1a(key, 0x84222325cbf29ce4ULL));
+}
+
+MergeCounts copy_shard(ResultStore& target, ShardReader& shard) {
+  sqlite3* in = shard.handle();
+  if (shard.has_table("sweeps")) {
+    Statement sweeps(in, "SELECT " + select_list(shard, "sweeps", kSweepColumns) + " FROM sweeps");
+    Statement insert(target.handle(),
+                     "INSERT OR IGNORE INTO sweeps (id, name, created_at, jobs, manifest) VALUES "
+                     "(?, ?, ?, ?, ?)");
+    while (sweeps.step()) {
+      for (int i = 0; i < 5; ++i) insert.bind_column(i + 1, sweeps, i);
+      insert.run();
     }
-    sqlite3_finalize(query);
   }
-  sqlite3_close(db);
-  if (code != SQLITE_OK) {
-    throw StoreError(
-        fmt::format("{}: not a result database to merge ({})", shard, sqlite3_errstr(code)));
+  // Columns 0 and 1 are the run's id and uid, then kRunColumns.
+  Statement runs(in, fmt::format("SELECT id, {}, {} FROM runs ORDER BY id",
+                                 shard.column_or_null("runs", "uid"),
+                                 select_list(shard, "runs", kRunColumns)));
+  const auto at = [](const std::string& column) {
+    return 2 + static_cast<int>(std::find(kRunColumns.begin(), kRunColumns.end(), column) -
+                                kRunColumns.begin());
+  };
+  const std::vector<int> identity = {
+      0, at("experiment"), at("config_hash"), at("seed"), at("started_at"), at("host"), at("pid")};
+  Statement trials(in, fmt::format("SELECT {} FROM trials WHERE run_id = ? ORDER BY rowid",
+                                   select_list(shard, "trials", kTrialColumns)));
+  Statement metrics(in, fmt::format("SELECT {} FROM metrics WHERE run_id = ? ORDER BY rowid",
+                                    select_list(shard, "metrics", kMetricColumns)));
+  Statement present(target.handle(), "SELECT count(*) FROM runs WHERE uid = ?");
+  std::vector<std::string> run_columns = kRunColumns;
+  run_columns.push_back("uid");
+  Statement copy_run(target.handle(), insert_sql("runs", run_columns));
+  Statement copy_trial(target.handle(), insert_sql("trials", kTrialColumns, "run_id"));
+  Statement copy_metric(target.handle(), insert_sql("metrics", kMetricColumns, "run_id"));
+
+  MergeCounts counts;
+  while (runs.step()) {
+    if (runs.column_text(at("status")) == "running") {
+      ++counts.unfinished;
+      continue;
+    }
+    const std::string stored_uid = runs.column_text(1);
+    const std::string uid = stored_uid.empty() ? derived_uid(runs, identity) : stored_uid;
+    present.bind(1, uid);
+    const bool known = present.step() && present.column_int(0) > 0;
+    present.reset();
+    if (known) {
+      ++counts.present;
+      continue;
+    }
+    for (size_t i = 0; i < kRunColumns.size(); ++i) {
+      copy_run.bind_column(static_cast<int>(i) + 1, runs, static_cast<int>(i) + 2);
+    }
+    copy_run.bind(static_cast<int>(kRunColumns.size()) + 1, uid).run();
+    const int64_t new_id = sqlite3_last_insert_rowid(target.handle());
+    const int64_t old_id = runs.column_int(0);
+    trials.bind(1, old_id);
+    while (trials.step()) {
+      copy_trial.bind(1, new_id);
+      for (size_t i = 0; i < kTrialColumns.size(); ++i) {
+        copy_trial.bind_column(static_cast<int>(i) + 2, trials, static_cast<int>(i));
+      }
+      copy_trial.run();
+    }
+    trials.reset();
+    metrics.bind(1, old_id);
+    while (metrics.step()) {
+      copy_metric.bind(1, new_id);
+      for (size_t i = 0; i < kMetricColumns.size(); ++i) {
+        copy_metric.bind_column(static_cast<int>(i) + 2, metrics, static_cast<int>(i));
+      }
+      copy_metric.run();
+    }
+    metrics.reset();
+    ++counts.added;
   }
-  if (tables < 3) {
+  return counts;
+}
+
+void refuse_the_target(const std::string& shard, const std::string& target_path) {
+  if (same_file(shard, target_path)) {
     throw StoreError(fmt::format(
-        "{}: not a result database to merge (it lacks the runs, trials or metrics table)", shard));
-  }
-  if (version > ResultStore::kSchemaVersion) {
-    throw StoreError(fmt::format(
-        "{}: written by a newer version of this program (schema {}, this one reads up to {})",
-        shard, version, ResultStore::kSchemaVersion));
+        "{}: is the database being merged into ({}): merge into another file", shard, target_path));
   }
 }
 
-MergeCounts merge_shard(ResultStore& target, const std::string& shard) {
-  check_shard(shard);
-  // Opening it through the store checks its schema and brings it up to date.
-  { ResultStore check(shard); }
-  MergeCounts counts;
-  Attached attached(target, shard);
+}  // namespace
+
+void check_shards(const std::vector<std::string>& shards, const std::string& target_path) {
+  for (const auto& shard : shards) {
+    refuse_the_target(shard, target_path);
+    ShardReader(shard).check_integrity();
+  }
+}
+
+std::vector<MergeCounts> merge_shards_into(ResultStore& target,
+                                           const std::vector<std::string>& shards) {
+  std::vector<MergeCounts> counts;
   target.transaction([&] {
-    target.execute(
-        "INSERT OR IGNORE INTO sweeps (id, name, created_at, jobs, manifest) "
-        "SELECT id, name, created_at, jobs, manifest FROM shard.sweeps");
-    Statement runs(target.handle(), "SELECT id, uid, status FROM shard.runs ORDER BY id");
-    Statement present(target.handle(), "SELECT count(*) FROM main.runs WHERE uid = ?");
-    Statement copy_run(target.handle(),
-                       fmt::format("INSERT INTO main.runs ({0}) SELECT {0} FROM shard.runs "
-                                   "WHERE id = ?",
-                                   kRunColumns));
-    Statement copy_trials(target.handle(),
-                          "INSERT INTO main.trials (run_id, trial, scenario, expected_action, "
-                          "chosen_action, success, failure, details) SELECT ?, trial, scenario, "
-                          "expected_action, chosen_action, success, failure, details FROM "
-                          "shard.trials WHERE run_id = ? ORDER BY rowid");
-    Statement copy_metrics(target.handle(),
-                           "INSERT INTO main.metrics (run_id, name, value) SELECT ?, name, value "
-                           "FROM shard.metrics WHERE run_id = ? ORDER BY rowid");
-    while (runs.step()) {
-      const int64_t id = runs.column_int(0);
-      if (runs.column_text(2) == "running") {
-        ++counts.unfinished;
-        continue;
+    counts.clear();
+    for (const auto& shard : shards) {
+      refuse_the_target(shard, target.path());
+      try {
+        ShardReader reader(shard);
+        counts.push_back(copy_shard(target, reader));
+      } catch (const StoreError& e) {
+        const std::string message = e.what();
+        throw StoreError(message.rfind(shard + ": ", 0) == 0
+                             ? message + "; nothing was merged"
+                             : fmt::format("{}: {}; nothing was merged", shard, message));
       }
-      present.bind(1, runs.column_text(1));
-      const bool known = present.step() && present.column_int(0) > 0;
-      present.reset();
-      if (known) {
-        ++counts.present;
-        continue;
-      }
-      copy_run.bind(1, id).run();
-      const int64_t new_id = sqlite3_last_insert_rowid(target.handle());
-      copy_trials.bind(1, new_id).bind(2, id).run();
-      copy_metrics.bind(1, new_id).bind(2, id).run();
-      ++counts.added;
     }
   });
   return counts;
+}
+
+MergeCounts merge_shard(ResultStore& target, const std::string& shard) {
+  check_shards({shard}, target.path());
+  return merge_shards_into(target, {shard}).front();
 }
 
 }  // namespace corrmp

@@ -1,5 +1,5 @@
 // Merging result databases: the shards a Slurm job array writes (one per task)
-// into one. docs/sweeps.md, "Merging shards".
+// into one. docs/slurm.md, "Merging the shards".
 #pragma once
 
 #include <string>
@@ -15,15 +15,22 @@ struct MergeCounts {
   int unfinished = 0;  // runs still 'running' in a shard: left for a later merge
 };
 
-// Copies every finished run of `shard` (with its trials and metrics) and its
-// sweeps into `target`, unless `target` already holds it: runs are matched by
-// their uid, so merging the same shard twice changes nothing. One transaction
-// per shard.
-MergeCounts merge_shard(ResultStore& target, const std::string& shard);
+// Throws StoreError naming the first of `shards` that cannot be merged into the database at
+// `target_path`: the target itself (under any spelling or link), a missing file, one that is
+// not a result database (tables or columns missing), a newer schema, a damaged page. Only
+// reads the shards (shard_reader.hpp), and neither opens nor makes the target.
+void check_shards(const std::vector<std::string>& shards, const std::string& target_path);
 
-// Throws StoreError naming `shard` unless it is a result database that merge_shard can read
-// (the runs, trials and metrics tables, a schema this program knows); changes nothing in it.
-// Checking every shard first refuses a bad one before anything is merged or the target made.
-void check_shard(const std::string& shard);
+// Copies every finished run of every shard (with its trials and metrics) and the shards'
+// sweeps into `target`, unless `target` already holds the run: runs are matched by their uid
+// (for a shard written before runs had one, a uid made from the run's own fields), so merging
+// the same shard twice changes nothing. All the shards in one transaction: when one fails,
+// nothing is merged. The shards are only read; check them first with check_shards. Returns
+// the counts of each shard, in order.
+std::vector<MergeCounts> merge_shards_into(ResultStore& target,
+                                           const std::vector<std::string>& shards);
+
+// check_shards and merge_shards_into for one shard.
+MergeCounts merge_shard(ResultStore& target, const std::string& shard);
 
 }  // namespace corrmp

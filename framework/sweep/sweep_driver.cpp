@@ -128,14 +128,14 @@ int run_on_slurm(const Sweep& sweep, const SweepDriverOptions& options) {
 }  // namespace
 
 void merge_shards(const std::vector<std::string>& shards, const std::string& db_path) {
-  for (const auto& shard : shards) check_shard(shard);  // before the target is opened or made
+  check_shards(shards, db_path);  // before the target is opened or made
   ResultStore target(db_path);
-  for (const auto& shard : shards) {
-    const MergeCounts counts = merge_shard(target, shard);
-    fmt::print("{}: {} runs added, {} already in {}{}\n", shard, counts.added, counts.present,
-               db_path,
-               counts.unfinished > 0
-                   ? fmt::format(", {} still running (merge again later)", counts.unfinished)
+  const std::vector<MergeCounts> counts = merge_shards_into(target, shards);
+  for (size_t i = 0; i < shards.size(); ++i) {
+    fmt::print("{}: {} runs added, {} already in {}{}\n", shards[i], counts[i].added,
+               counts[i].present, db_path,
+               counts[i].unfinished > 0
+                   ? fmt::format(", {} still running (merge again later)", counts[i].unfinished)
                    : "");
   }
 }

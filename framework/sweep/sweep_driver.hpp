@@ -23,8 +23,9 @@ struct SweepDriverOptions {
   bool wait = false;               // slurm: wait for the array, then merge its shards
 };
 
-// Merges each shard database into `db_path` (store/store_merge.hpp), printing
-// one line per shard.
+// Merges the shard databases into `db_path` (store/store_merge.hpp): every shard checked
+// before anything is merged, all of them in one transaction, none of them changed; then
+// prints one line per shard. Throws StoreError naming the shard that cannot be merged.
 void merge_shards(const std::vector<std::string>& shards, const std::string& db_path);
 
 // Loads every job's experiment (throws ConfigError naming the job and its

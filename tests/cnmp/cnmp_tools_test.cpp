@@ -230,5 +230,122 @@ TEST(CnmpTools, BadInputGivesAClearErrorAndNonZeroExit) {
   }
 }
 
+std::string bytes_of(const std::string& path) {
+  std::ifstream in(path, std::ios::binary);
+  std::stringstream text;
+  text << in.rdbuf();
+  return text.str();
+}
+
+// Whether this build runs under a sanitizer, whose shadow memory no address-space limit allows.
+#if defined(__SANITIZE_ADDRESS__) || defined(__SANITIZE_THREAD__)
+constexpr bool kSanitized = true;
+#elif defined(__has_feature)
+#if __has_feature(address_sanitizer) || __has_feature(thread_sanitizer)
+constexpr bool kSanitized = true;
+#else
+constexpr bool kSanitized = false;
+#endif
+#else
+constexpr bool kSanitized = false;
+#endif
+
+// An output that is one of the inputs (the same file by any spelling or link) is refused before
+// any work, exit 2, and the input is left as it was.
+TEST(CnmpTools, AnOutputThatIsAnInputIsRefusedBeforeAnyWork) {
+  TempDir dir;
+  write_demos(dir);
+  const std::string first = dir.file("demos/00.csv"), second = dir.file("demos/01.csv");
+  const std::string demo = bytes_of(first);
+  std::filesystem::create_symlink(first, dir.file("link.csv"));
+  std::string err;
+  for (const auto& [data, out] : std::vector<std::pair<std::string, std::string>>{
+           {first + " " + second, first},
+           {first + " " + second, dir.file("demos/../demos/./00.csv")},
+           {dir.file("demos"), dir.file("link.csv")}}) {
+    EXPECT_EQ(run(fmt::format("{} --data {} --time time --y px,py --updates 10 --width 4 --out {} "
+                              "--quiet",
+                              TRAIN_CNMP_BIN, data, out),
+                  &err, &dir),
+              2)
+        << out;
+    EXPECT_EQ(err.rfind("train_cnmp: --out " + out + ": is the demonstration file ", 0), 0u) << err;
+    EXPECT_NE(err.find("write the model to another file\n"), std::string::npos) << err;
+    EXPECT_EQ(std::count(err.begin(), err.end(), '\n'), 1) << err;
+    EXPECT_TRUE(bytes_of(first) == demo) << out << ": the demonstration was overwritten";
+  }
+  const std::string model = dir.file("m.cnmp");
+  ASSERT_EQ(run(fmt::format("{} --data {} --time time --y px,py --updates 10 --width 4 --out {} "
+                            "--quiet",
+                            TRAIN_CNMP_BIN, dir.file("demos"), model)),
+            0);
+  const std::string trained = bytes_of(model);
+  for (const std::string& out : {model, dir.file("./m.cnmp")}) {
+    EXPECT_EQ(run(fmt::format("{} --model {} --obs 0,0,0 --steps 5 --out {}", PREDICT_CNMP_BIN,
+                              model, out),
+                  &err, &dir),
+              2)
+        << out;
+    EXPECT_EQ(err, "predict_cnmp: --out " + out + ": is the model file (--model " + model +
+                       "): write the predictions to another file\n");
+    EXPECT_TRUE(bytes_of(model) == trained) << out << ": the model was overwritten";
+  }
+}
+
+// Sizes whose training cannot fit in memory are refused before training, naming the option
+// (the estimate run_experiment makes at load), instead of ending in std::bad_alloc.
+TEST(CnmpTools, SizesThatCannotFitInMemoryAreRefusedNamingTheOption) {
+  TempDir dir;
+  write_demos(dir);
+  // One update and its validation: without the estimate, the failure would come at once.
+  const std::string train =
+      fmt::format("{} --data {} --time time --y px,py --updates 1 --validate-every 1 --out {}",
+                  TRAIN_CNMP_BIN, dir.file("demos"), dir.file("m.cnmp"));
+  std::string err;
+  EXPECT_EQ(run(train + " --batch 2000000000", &err, &dir), 2);
+  EXPECT_EQ(err.rfind("train_cnmp: --batch: the declared sizes need about ", 0), 0u) << err;
+  EXPECT_NE(err.find("for the training batches (batch_size 2000000000"), std::string::npos) << err;
+  EXPECT_EQ(std::count(err.begin(), err.end(), '\n'), 1) << err;
+  if (kSanitized) GTEST_SKIP() << "a sanitizer's shadow memory cannot run under ulimit -v";
+  // The widest, deepest network: about 500 million parameters, more than 8 GiB allow.
+  EXPECT_EQ(
+      run("ulimit -v 8388608; " + train + " --width 4096 --encoder-layers 16 --decoder-layers 16",
+          &err, &dir),
+      2);
+  EXPECT_EQ(err.rfind("train_cnmp: --width: the declared sizes need about ", 0), 0u) << err;
+  EXPECT_NE(err.find("width 4096, 16 encoder and 16 decoder layers"), std::string::npos) << err;
+  EXPECT_NE(err.find("this process may use 8.0 GiB (ulimit)"), std::string::npos) << err;
+  EXPECT_FALSE(std::filesystem::exists(dir.file("m.cnmp")));
+}
+
+// A column named twice, or given two roles (the time column as an output), is refused in one
+// line before the data is read.
+TEST(CnmpTools, AColumnNamedTwiceOrGivenTwoRolesIsRefused) {
+  TempDir dir;
+  write_demos(dir);
+  const std::vector<std::pair<std::string, std::string>> cases = {
+      {"--time time --y px,px", "--y: column 'px' is named twice"},
+      {"--time time --y time",
+       "--y: column 'time' is also named by --time; each column has one "
+       "role"},
+      {"--time time --y px --context px",
+       "--context: column 'px' is also named by --y; each "
+       "column has one role"},
+      {"--time time --x goal --y goal",
+       "--y: column 'goal' is also named by --x; each column has "
+       "one role"},
+  };
+  std::string err;
+  for (const auto& [args, expected] : cases) {
+    EXPECT_EQ(run(fmt::format("{} --data {} {} --updates 10 --width 4 --out {} --quiet",
+                              TRAIN_CNMP_BIN, dir.file("demos"), args, dir.file("m.cnmp")),
+                  &err, &dir),
+              2)
+        << args;
+    EXPECT_EQ(err, "train_cnmp: " + expected + "\n") << args;
+    EXPECT_FALSE(std::filesystem::exists(dir.file("m.cnmp"))) << args;
+  }
+}
+
 }  // namespace
 }  // namespace corrmp

@@ -54,6 +54,11 @@ TEST(HostileConfigs, AbsurdSizesNamesAndListsAreConfigErrorsBeforeAnythingIsWrit
        "environment.pre_points: value 2000000000 is out of range"},
       {config("corridor_pc.yaml") + " policy.training.batch_size=2000000000",
        "policy.training.batch_size: value 2000000000 is out of range"},
+      // Noise or contexts that make the demonstrations non-finite.
+      {config("curves_demo.yaml") + " demonstrations.noise=1e308",
+       "demonstrations.noise: value 1e308 is out of range"},
+      {config("curves_demo.yaml") + " demonstrations.context_max=1e308",
+       "demonstrations.context_max: value 1e308 is out of range"},
       // Values that would make a simulation run for ever.
       {config("rope_color.yaml") + " environment.settle_time=1e9",
        "environment.settle_time: value 1e9 is out of range: must be in [0, 10]"},
@@ -87,6 +92,43 @@ TEST(HostileConfigs, AbsurdSizesNamesAndListsAreConfigErrorsBeforeAnythingIsWrit
     EXPECT_EQ(std::count(outcome.err.begin(), outcome.err.end(), '\n'), 1) << outcome.err;
     EXPECT_FALSE(std::filesystem::exists(dir.file("r.sqlite"))) << args;
   }
+}
+
+// Whether this build runs under a sanitizer, whose shadow memory no address-space limit allows.
+#if defined(__SANITIZE_ADDRESS__) || defined(__SANITIZE_THREAD__)
+constexpr bool kSanitized = true;
+#elif defined(__has_feature)
+#if __has_feature(address_sanitizer) || __has_feature(thread_sanitizer)
+constexpr bool kSanitized = true;
+#else
+constexpr bool kSanitized = false;
+#endif
+#else
+constexpr bool kSanitized = false;
+#endif
+
+// The CNMP's own weights count in the memory estimate: the widest, deepest network (about 500
+// million parameters) does not fit in 8 GiB and is refused at load, naming the network's key.
+TEST(HostileConfigs, ANetworkTooLargeForTheMemoryIsAConfigError) {
+  if (kSanitized) GTEST_SKIP() << "a sanitizer's shadow memory cannot run under ulimit -v";
+  TempDir dir;
+  // One update and its validation: without the estimate, the failure would come at once.
+  const std::string big = dir.write(
+      "big.yaml", "include: [" + config("curves_demo.yaml") +
+                      "]\npolicy:\n  network: {width: 4096, encoder_layers: 16, decoder_layers: "
+                      "16}\n  training: {updates: 1, validate_every: 1}\n");
+  const ToolOutcome outcome =
+      testing::run_tool(dir, "ulimit -v 8388608; " + std::string(RUN_EXPERIMENT_BIN) + " " + big +
+                                 " --db " + dir.file("r.sqlite") + " --out " + dir.file("runs"));
+  EXPECT_EQ(outcome.exit_code, 2) << outcome.err;
+  EXPECT_EQ(outcome.err.rfind(big + ":3:", 0), 0u) << outcome.err;
+  EXPECT_NE(outcome.err.find(": policy.network.width: the declared sizes need about"),
+            std::string::npos)
+      << outcome.err;
+  EXPECT_NE(outcome.err.find("width 4096, 16 encoder and 16 decoder layers"), std::string::npos)
+      << outcome.err;
+  EXPECT_EQ(std::count(outcome.err.begin(), outcome.err.end(), '\n'), 1) << outcome.err;
+  EXPECT_FALSE(std::filesystem::exists(dir.file("r.sqlite")));
 }
 
 // max_targets and max_observations larger than any trajectory mean "all points": the batch

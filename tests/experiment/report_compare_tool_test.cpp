@@ -178,5 +178,51 @@ TEST(ReportTool, SaysWhatIsWrongWithACompareInOneLine) {
       << still.out;
 }
 
+// An --out that is a file, or lies below one, is named in one line (exit 2), for each of the
+// options that write there; the file is left as it was.
+TEST(ReportTool, AnOutFolderThatIsAFileIsRefusedNamingIt) {
+  TempDir dir;
+  record_runs(dir);
+  const std::string file = dir.write("afile", "in the way\n");
+  for (const std::string& out : {file, file + "/below"}) {
+    for (const std::string& args :
+         {"--compare --sweep s1 --out " + out, "--reproduction --sweep s1 --out " + out,
+          "--plot-success experiment --sweep s1 --out " + out}) {
+      const ToolOutcome bad = report_tool(dir, args);
+      EXPECT_EQ(bad.exit_code, 2) << args << "\n" << bad.err;
+      EXPECT_EQ(bad.err, "report: --out " + out + ": '" + file + "' is a file, not a folder\n")
+          << args;
+    }
+  }
+  EXPECT_EQ(read(file), "in the way\n");
+}
+
+// A selection whose runs all failed or were interrupted: the message counts them and names the
+// option that shows them, instead of suggesting there are none.
+TEST(ReportTool, NoCompletedRunSaysHowManyFailedAndWhichOptionShowsThem) {
+  TempDir dir;
+  {
+    ResultStore store(dir.file("r.sqlite"));
+    RunRecord run;
+    run.experiment = "curves_demo";
+    run.config = "seed: 0\n";
+    run.config_hash = "h";
+    store.end_run(store.begin_run(run), "failed", "std::bad_alloc");
+    store.end_run(store.begin_run(run), "failed", "std::bad_alloc");
+    store.end_run(store.begin_run(run), "interrupted", "Ctrl-C");
+  }
+  const std::string db = dir.file("r.sqlite");
+  const ToolOutcome table = report_tool(dir, "");
+  EXPECT_EQ(table.exit_code, 1);
+  EXPECT_EQ(table.err, "report: no completed run in '" + db +
+                           "' matches, but 2 failed and 1 interrupted do: --all shows them\n");
+  const ToolOutcome compared = report_tool(dir, "--compare");
+  EXPECT_EQ(compared.exit_code, 2);
+  EXPECT_EQ(compared.err, table.err);
+  const ToolOutcome all = report_tool(dir, "--all");
+  EXPECT_EQ(all.exit_code, 0) << all.err;
+  EXPECT_NE(all.out.find("| failed |"), std::string::npos) << all.out;
+}
+
 }  // namespace
 }  // namespace corrmp

@@ -1,9 +1,12 @@
 // Merging shard databases (framework/store/store_merge.hpp): runs, trials,
 // metrics and sweeps copied once, whatever the number of merges; unfinished
-// runs left for later; a version-2 database migrated on open.
+// runs left for later; a version-2 shard read as it is; all the shards in one
+// transaction.
 #include "store/store_merge.hpp"
 
 #include <gtest/gtest.h>
+
+#include <filesystem>
 
 #include "config/test_files.hpp"
 
@@ -84,6 +87,54 @@ TEST(StoreMerge, RefusesAMissingShardAndGivesOlderRunsAUid) {
   EXPECT_EQ(merge_shard(target, dir.file("old.sqlite")).added, 1);
   EXPECT_EQ(merge_shard(target, dir.file("old.sqlite")).added, 0);
   EXPECT_EQ(target.query_int("SELECT count(*) FROM runs WHERE uid IS NOT NULL"), 1);
+}
+
+// All the shards go in one transaction: one that fails while it is copied (here a run the
+// target's schema refuses, which the checks before copying do not look at) leaves the target
+// as it was, and the error names that shard.
+TEST(StoreMerge, AShardThatFailsWhileCopiedLeavesTheTargetAsItWas) {
+  TempDir dir;
+  {
+    ResultStore good(dir.file("good.sqlite"));
+    add_run(good, "a", 0, true);
+  }
+  {
+    ResultStore bad(dir.file("bad.sqlite"));
+    bad.execute(
+        "DROP TABLE trials; DROP TABLE metrics; DROP TABLE runs; "
+        "CREATE TABLE runs (id INTEGER PRIMARY KEY, experiment, config, config_hash, seed, "
+        "status, started_at, finished_at, git_commit, git_dirty, out_dir, host, pid, failure, "
+        "uid, sweep_id, job_index, axes); "
+        "CREATE TABLE trials (run_id, trial, scenario, expected_action, chosen_action, success, "
+        "failure, details); CREATE TABLE metrics (run_id, name, value); "
+        "INSERT INTO runs (experiment, config, config_hash, seed, status, started_at, uid) "
+        "VALUES ('b', 'c', 'h', 1, 'finished somehow', 't', 'u-1')");
+  }
+  const std::vector<std::string> shards = {dir.file("good.sqlite"), dir.file("bad.sqlite")};
+  check_shards(shards, dir.file("all.sqlite"));
+  ResultStore target(dir.file("all.sqlite"));
+  try {
+    merge_shards_into(target, shards);
+    FAIL() << "the bad shard was merged";
+  } catch (const StoreError& e) {
+    const std::string message = e.what();
+    EXPECT_EQ(message.rfind(dir.file("bad.sqlite") + ": ", 0), 0u) << message;
+    EXPECT_NE(message.find("nothing was merged"), std::string::npos) << message;
+  }
+  EXPECT_EQ(target.query_int("SELECT count(*) FROM runs"), 0);
+  EXPECT_EQ(target.query_int("SELECT count(*) FROM trials"), 0);
+}
+
+// A shard whose writer still has it open keeps its newest rows in the write-ahead log beside
+// it: the merge reads them through that log.
+TEST(StoreMerge, AShardStillOpenByItsWriterIsReadThroughItsLog) {
+  TempDir dir;
+  ResultStore writer(dir.file("job-0.sqlite"));
+  add_run(writer, "a", 0, true);
+  ASSERT_TRUE(std::filesystem::exists(dir.file("job-0.sqlite-wal")));
+  ResultStore target(dir.file("all.sqlite"));
+  EXPECT_EQ(merge_shard(target, dir.file("job-0.sqlite")).added, 1);
+  EXPECT_EQ(target.query_int("SELECT count(*) FROM trials"), 2);
 }
 
 }  // namespace
