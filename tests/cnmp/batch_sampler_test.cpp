@@ -100,7 +100,9 @@ TEST(BatchSampler, ABatchSharesItsCountsCappedByEachDemonstrationsLength) {
       const int steps = task == 0 ? 3 : 40;
       ASSERT_TRUE(n >= 1 && n <= steps - 1 && m >= 1 && n + m <= steps) << n << " " << m;
       if (task == 1) {  // uncapped: the batch's draw itself
-        if (n_long >= 0) ASSERT_TRUE(n == n_long && m == m_long);
+        if (n_long >= 0) {
+          ASSERT_TRUE(n == n_long && m == m_long);
+        }
         n_long = n;
         m_long = m;
       }
