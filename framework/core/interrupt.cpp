@@ -1,6 +1,8 @@
 // Signal handling for clean interruption of runs.
 #include "core/interrupt.hpp"
 
+#include <signal.h>
+
 #include <csignal>
 
 namespace corrmp {
@@ -17,7 +19,12 @@ StopWhen::~StopWhen() { t_stop = saved_; }
 void install_interrupt_handlers() {
   std::signal(SIGINT, on_signal);
   std::signal(SIGTERM, on_signal);
-  std::signal(SIGHUP, on_signal);  // a closed terminal: stop cleanly as for SIGTERM
+  // A closed terminal stops cleanly as SIGTERM does, unless the process was started to ignore
+  // it (nohup): then it stays ignored.
+  struct sigaction hangup {};
+  if (::sigaction(SIGHUP, nullptr, &hangup) == 0 && hangup.sa_handler != SIG_IGN) {
+    std::signal(SIGHUP, on_signal);
+  }
 }
 
 bool interrupt_requested() { return g_signal != 0 || (t_stop != nullptr && t_stop->load()); }

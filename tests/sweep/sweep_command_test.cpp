@@ -221,6 +221,36 @@ TEST(SweepCommand, CtrlCStopsTheJobsAndCountsTheOnesNeverStarted) {
 // A closed terminal (SIGHUP to the driver and its jobs, one process group) stops the sweep as
 // Ctrl-C does: the runs recorded interrupted, the lock removed, exit 130, and a resume command
 // that, pasted into bash, runs with the very paths given.
+// nohup starts a process with SIGHUP ignored; the run must keep it ignored and finish.
+TEST(SweepCommand, UnderNohupAHangupIsIgnoredAndTheRunFinishes) {
+  TempDir dir;
+  std::string seconds_long = testing::kTiny;  // long enough to be running when the signal comes
+  seconds_long.replace(seconds_long.find("updates: 200"), 12, "updates: 40000");
+  const std::string config = dir.write("tiny.yaml", seconds_long);
+  const std::string db = dir.file("r.sqlite"), runs = dir.file("runs");
+  const pid_t child = ::fork();
+  if (child == 0) {
+    ::setpgid(0, 0);
+    ::signal(SIGHUP, SIG_IGN);
+    const int null = ::open("/dev/null", O_WRONLY);
+    ::dup2(null, STDOUT_FILENO);
+    ::dup2(null, STDERR_FILENO);
+    ::execl(RUN_EXPERIMENT_BIN, RUN_EXPERIMENT_BIN, config.c_str(), "--db", db.c_str(), "--out",
+            runs.c_str(), static_cast<char*>(nullptr));
+    ::_exit(127);
+  }
+  ::setpgid(child, child);
+  ASSERT_GT(testing::wait_until_positive(db, "SELECT count(*) FROM runs WHERE status = 'running'"),
+            0);
+  ::kill(-child, SIGHUP);
+  int status = 0;
+  ::waitpid(child, &status, 0);
+  ASSERT_TRUE(WIFEXITED(status)) << "killed by signal " << WTERMSIG(status);
+  EXPECT_EQ(WEXITSTATUS(status), 0);
+  ResultStore store(db);
+  EXPECT_EQ(store.query_int("SELECT count(*) FROM runs WHERE status = 'completed'"), 1);
+}
+
 TEST(SweepCommand, AHangupStopsTheSweepLikeCtrlC) {
   TempDir dir;
   const std::string config = dir.write("tiny.yaml", testing::slow_tiny());

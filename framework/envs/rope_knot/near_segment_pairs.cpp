@@ -39,16 +39,29 @@ void for_each_near_segment_pair(const std::vector<Eigen::Vector2d>& flat, double
   const Eigen::Vector2d size = hi - lo;
   double cell = std::max(extents[n / 2], std::sqrt(size.x() * size.y() / (4.0 * n)));
   if (!(cell > 0.0)) cell = size.maxCoeff();
-  const auto cells_along = [&](double length) {
-    return static_cast<int>(std::min(4.0 * n, std::floor(length / cell))) + 1;
+  int columns = 1, rows = 1;
+  if (std::isfinite(cell) && cell > 0.0 && size.allFinite()) {
+    columns = static_cast<int>(std::min(4.0 * n, std::floor(size.x() / cell))) + 1;
+    rows = static_cast<int>(std::min(4.0 * n, std::floor(size.y() / cell))) + 1;
+  } else {
+    cell = 1.0;  // one cell: every pair is tested
+  }
+  // A cell index, clamped before the conversion (a NaN or huge quotient stays in range).
+  const auto index = [cell](double offset, int count) {
+    const double q = std::floor(offset / cell);
+    if (!(q > 0.0)) return 0;
+    return q >= count - 1 ? count - 1 : static_cast<int>(q);
   };
-  const int columns = cells_along(size.x()), rows = cells_along(size.y());
-  const auto column_of = [&](double x) {
-    return std::clamp(static_cast<int>((x - lo.x()) / cell), 0, columns - 1);
-  };
-  const auto row_of = [&](double y) {
-    return std::clamp(static_cast<int>((y - lo.y()) / cell), 0, rows - 1);
-  };
+  const auto column_of = [&](double x) { return index(x - lo.x(), columns); };
+  const auto row_of = [&](double y) { return index(y - lo.y(), rows); };
+  // Many long segments among short ones would each fill a row or column of cells: past a
+  // budget of memberships, one cell (all pairs, as many tests as without a grid) is cheaper.
+  double memberships = 0.0;
+  for (const Box& box : boxes) {
+    memberships += (row_of(box.hi.y()) - row_of(box.lo.y()) + 1.0) *
+                   (column_of(box.hi.x()) - column_of(box.lo.x()) + 1.0);
+  }
+  if (memberships > 32.0 * n) columns = rows = 1;
   std::vector<std::vector<int>> members(static_cast<size_t>(columns) * rows);
   for (int i = 0; i < n; ++i) {
     for (int r = row_of(boxes[i].lo.y()); r <= row_of(boxes[i].hi.y()); ++r) {

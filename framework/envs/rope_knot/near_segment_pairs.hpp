@@ -13,7 +13,8 @@ namespace corrmp {
 // grown by reach / 2 on every side, overlap: every pair that crosses or whose segments come
 // within `reach` of each other is visited, and in a polygon whose segments are short beside its
 // size few others are. Neighbouring segments are visited too; the order of calls is fixed by
-// the input. Requires reach >= 0 and finite coordinates.
+// the input. Memory is O(n); time is about linear in n for such polygons and at worst that of
+// testing all pairs. Requires reach >= 0 (an infinite reach visits every pair).
 void for_each_near_segment_pair(const std::vector<Eigen::Vector2d>& flat, double reach,
                                 const std::function<void(int, int)>& visit);
 

@@ -367,7 +367,8 @@ TEST(OpenRope, WrapAroundTheBarIsNotAKnot) {
 }
 
 TEST(OpenRope, LoopOverAPerfectlyStraightStandingPartIsNeverKnotted) {
-  // Two that rounded orientation tests under multiply-add contraction reported knotted.
+  // Two whose standing part a rounded orientation test under multiply-add contraction finds
+  // crossing itself, then 300 drawn at random.
   std::vector<StraightPartRope> ropes{
       {31, 0.94543669252865636, -0.20217768787618406, 0.10189860867043188, 0.35928280913565586, 0.0,
        Eigen::Vector3d::UnitX(),

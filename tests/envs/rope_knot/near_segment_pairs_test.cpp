@@ -5,6 +5,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <limits>
 #include <set>
 #include <utility>
 
@@ -55,6 +56,27 @@ TEST(NearSegmentPairs, VisitsEveryPairWhoseGrownBoxesOverlapOnce) {
     if (trial % 2 == 0) walk.push_back({40.0, 40.0});
     for (double reach : {0.0, 0.01, 0.3, 5.0}) expect_exactly_the_near_pairs(walk, reach);
   }
+}
+
+TEST(NearSegmentPairs, DegenerateSizesVisitEveryPairThatIsNear) {
+  const std::vector<Eigen::Vector2d> same(50, Eigen::Vector2d(0.3, -2.0));
+  expect_exactly_the_near_pairs(same, 0.0);
+  expect_exactly_the_near_pairs(same, 1.0);
+  Rng rng(8);
+  std::vector<Eigen::Vector2d> walk{{0, 0}};
+  for (int k = 1; k < 60; ++k) walk.push_back(walk.back() + Eigen::Vector2d(rng.normal(), 0.1));
+  expect_exactly_the_near_pairs(walk, std::numeric_limits<double>::infinity());
+  std::vector<Eigen::Vector2d> huge;
+  for (const auto& p : walk) huge.push_back(1e300 * p);
+  expect_exactly_the_near_pairs(huge, 3.7e299);
+  // Tiny segments on a line with long ones across the whole extent between them: the grid's
+  // cells are small and each long box spans all of them.
+  std::vector<Eigen::Vector2d> comb;
+  for (int k = 0; k < 200; ++k) {
+    comb.emplace_back(k * 1e-3, 0.0);
+    if (k % 2 == 0) comb.emplace_back(1e9, k * 1e-9);
+  }
+  expect_exactly_the_near_pairs(comb, 0.0);
 }
 
 TEST(NearSegmentPairs, HandlesFlatAndTinyPolygons) {
