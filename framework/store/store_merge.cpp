@@ -6,6 +6,7 @@
 #include <algorithm>
 
 #include "core/path_checks.hpp"
+#include "store/run_uid.hpp"
 #include "store/shard_reader.hpp"
 #include "store/statement.hpp"
 
@@ -42,26 +43,6 @@ std::string insert_sql(const std::string& table, const std::vector<std::string>&
   return fmt::format("INSERT INTO {} ({}) VALUES ({})", table, names, values);
 }
 
-uint64_t fnv1a(const std::string& bytes, uint64_t hash) {
-  for (const unsigned char c : bytes) {
-    hash ^= c;
-    hash *= 0x100000001b3ULL;
-  }
-  return hash;
-}
-
-// A uid for a run of a shard written before runs had one: a hash of the fields that tell runs
-// apart, so that merging the shard again finds the run already there.
-std::string derived_uid(const Statement& run, const std::vector<int>& fields) {
-  std::string key;
-  for (int field : fields) {
-    const std::string text = run.column_text(field);
-    key += std::to_string(text.size()) + ":" + text + ";";
-  }
-  return fmt::format("{:016x}{:016x}", fnv1a(key, 0xcbf29ce484222325ULL),
-                     fnv1a(key, 0x84222325cbf29ce4ULL));
-}
-
 MergeCounts copy_shard(ResultStore& target, ShardReader& shard) {
   sqlite3* in = shard.handle();
   if (shard.has_table("sweeps")) {
@@ -82,8 +63,9 @@ MergeCounts copy_shard(ResultStore& target, ShardReader& shard) {
     return 2 + static_cast<int>(std::find(kRunColumns.begin(), kRunColumns.end(), column) -
                                 kRunColumns.begin());
   };
-  const std::vector<int> identity = {
-      0, at("experiment"), at("config_hash"), at("seed"), at("started_at"), at("host"), at("pid")};
+  std::vector<int> identity;  // the columns of kRunIdentityColumns
+  for (const auto& column : kRunIdentityColumns)
+    identity.push_back(column == "id" ? 0 : at(column));
   Statement trials(in, fmt::format("SELECT {} FROM trials WHERE run_id = ? ORDER BY rowid",
                                    select_list(shard, "trials", kTrialColumns)));
   Statement metrics(in, fmt::format("SELECT {} FROM metrics WHERE run_id = ? ORDER BY rowid",
@@ -102,7 +84,12 @@ MergeCounts copy_shard(ResultStore& target, ShardReader& shard) {
       continue;
     }
     const std::string stored_uid = runs.column_text(1);
-    const std::string uid = stored_uid.empty() ? derived_uid(runs, identity) : stored_uid;
+    std::string uid = stored_uid;
+    if (uid.empty()) {  // a shard written before runs had a uid
+      std::vector<std::string> values;
+      for (int column : identity) values.push_back(runs.column_text(column));
+      uid = derived_run_uid(values);
+    }
     present.bind(1, uid);
     const bool known = present.step() && present.column_int(0) > 0;
     present.reset();

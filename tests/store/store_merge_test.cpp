@@ -33,6 +33,15 @@ int64_t add_run(ResultStore& store, const std::string& experiment, int job, bool
   return id;
 }
 
+// Takes `store` back to schema version 2 (runs without uid or sweep), as an older build wrote it.
+void downgrade_to_version_2(ResultStore& store) {
+  store.execute("DROP INDEX runs_uid; DROP INDEX runs_sweep; DROP TABLE sweeps;");
+  store.execute(
+      "ALTER TABLE runs DROP COLUMN uid; ALTER TABLE runs DROP COLUMN sweep_id; "
+      "ALTER TABLE runs DROP COLUMN job_index; ALTER TABLE runs DROP COLUMN axes; "
+      "PRAGMA user_version = 2");
+}
+
 TEST(StoreMerge, CopiesFinishedRunsOnceAndIsIdempotent) {
   TempDir dir;
   {
@@ -77,16 +86,31 @@ TEST(StoreMerge, RefusesAMissingShardAndGivesOlderRunsAUid) {
   {
     ResultStore old(dir.file("old.sqlite"));
     add_run(old, "a", 0, true);
-    // Back to version 2, as an older build wrote it.
-    old.execute("DROP INDEX runs_uid; DROP INDEX runs_sweep; DROP TABLE sweeps;");
-    old.execute(
-        "ALTER TABLE runs DROP COLUMN uid; ALTER TABLE runs DROP COLUMN sweep_id; "
-        "ALTER TABLE runs DROP COLUMN job_index; ALTER TABLE runs DROP COLUMN axes; "
-        "PRAGMA user_version = 2");
+    downgrade_to_version_2(old);
   }
   EXPECT_EQ(merge_shard(target, dir.file("old.sqlite")).added, 1);
   EXPECT_EQ(merge_shard(target, dir.file("old.sqlite")).added, 0);
   EXPECT_EQ(target.query_int("SELECT count(*) FROM runs WHERE uid IS NOT NULL"), 1);
+}
+
+// A version-2 shard upgraded after it was merged (opened as a result store, as `report --db`
+// does) gives its runs the uids the merge made from their fields: merging it again adds nothing.
+TEST(StoreMerge, AnOldShardUpgradedAfterItsMergeIsNotMergedAgain) {
+  TempDir dir;
+  const std::string old_path = dir.file("old.sqlite");
+  {
+    ResultStore old(old_path);
+    add_run(old, "a", 0, true);
+    add_run(old, "b", 1, true);
+    downgrade_to_version_2(old);
+  }
+  ResultStore target(dir.file("all.sqlite"));
+  EXPECT_EQ(merge_shard(target, old_path).added, 2);
+  { ResultStore upgraded(old_path); }
+  const MergeCounts again = merge_shard(target, old_path);
+  EXPECT_EQ(again.added, 0);
+  EXPECT_EQ(again.present, 2);
+  EXPECT_EQ(target.query_int("SELECT count(*) FROM runs"), 2);
 }
 
 // All the shards go in one transaction: one that fails while it is copied (here a run the
