@@ -29,10 +29,10 @@ const std::vector<std::pair<std::string, std::vector<std::string>>> kFirstColumn
 };
 const std::vector<std::string> kSweepColumns = {"id", "name", "created_at", "jobs", "manifest"};
 
-// An SQLite URI naming `path`, every byte but unreserved ones and '/' percent-encoded.
+// An SQLite URI naming `path` (absolute), every byte but unreserved ones and '/' percent-encoded.
 std::string file_uri(const std::string& path, const char* parameters) {
   std::string uri = "file://";
-  for (const unsigned char c : fs::absolute(path).string()) {
+  for (const unsigned char c : path) {
     if (std::isalnum(c) || c == '/' || c == '-' || c == '.' || c == '_' || c == '~') {
       uri += static_cast<char>(c);
     } else {
@@ -44,7 +44,9 @@ std::string file_uri(const std::string& path, const char* parameters) {
 
 // A database with its write-ahead log beside it has committed rows in that log, which only a
 // reader that uses the log sees; that log and its index already exist, so reading makes no new
-// file. Any other is read as immutable: no lock, no log, nothing made beside it.
+// file (but for an index that is missing: SQLite cannot read the log without one, and makes it).
+// Any other is read as immutable: no lock, no log, nothing made beside it. `path` is the real
+// file, links followed, as SQLite keeps the log beside that.
 const char* read_only_parameters(const std::string& path) {
   std::error_code error;
   const auto log_size = fs::file_size(path + "-wal", error);
@@ -58,7 +60,9 @@ ShardReader::ShardReader(const std::string& path) : path_(path) {
   if (!fs::is_regular_file(path, error)) {
     throw StoreError(fmt::format("{}: no such database file", path));
   }
-  const std::string uri = file_uri(path, read_only_parameters(path));
+  const std::string real_path = fs::canonical(path, error).string();
+  if (error) throw StoreError(fmt::format("{}: cannot open it: {}", path, error.message()));
+  const std::string uri = file_uri(real_path, read_only_parameters(real_path));
   try {
     const int code =
         sqlite3_open_v2(uri.c_str(), &db_, SQLITE_OPEN_READONLY | SQLITE_OPEN_URI, nullptr);

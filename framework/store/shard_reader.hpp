@@ -1,7 +1,8 @@
 // A result database read as the input of a merge (store_merge.hpp). It is opened read-only and
 // never changed: no schema upgrade, no journal-mode change, and no -wal or -shm file made beside
 // it (a database whose write-ahead log is beside it, one a task may still be writing, is read
-// through that log). docs/slurm.md, "Merging the shards".
+// through that log; if the log's -shm index is missing, SQLite makes it, as it cannot read the
+// log without one). docs/slurm.md, "Merging the shards".
 #pragma once
 
 #include <sqlite3.h>

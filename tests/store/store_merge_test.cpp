@@ -161,5 +161,19 @@ TEST(StoreMerge, AShardStillOpenByItsWriterIsReadThroughItsLog) {
   EXPECT_EQ(target.query_int("SELECT count(*) FROM trials"), 2);
 }
 
+// SQLite keeps the log beside the file a link points to: a shard named through a link (its
+// schema checkpointed, its runs still in the log) is read through that log too.
+TEST(StoreMerge, AShardNamedThroughALinkIsReadThroughItsLog) {
+  TempDir dir;
+  ResultStore writer(dir.file("job-0.sqlite"));
+  writer.execute("PRAGMA wal_checkpoint(TRUNCATE)");
+  add_run(writer, "a", 0, true);
+  std::filesystem::create_directories(dir.file("links"));
+  std::filesystem::create_symlink(dir.file("job-0.sqlite"), dir.file("links/job-0.sqlite"));
+  ResultStore target(dir.file("all.sqlite"));
+  EXPECT_EQ(merge_shard(target, dir.file("links/job-0.sqlite")).added, 1);
+  EXPECT_EQ(target.query_int("SELECT count(*) FROM trials"), 2);
+}
+
 }  // namespace
 }  // namespace corrmp
