@@ -1,7 +1,7 @@
 // Merging shard databases (framework/store/store_merge.hpp): runs, trials,
 // metrics and sweeps copied once, whatever the number of merges; unfinished
 // runs left for later; a version-2 shard read as it is; all the shards in one
-// transaction.
+// transaction; a failure names the file it came from.
 #include "store/store_merge.hpp"
 
 #include <gtest/gtest.h>
@@ -40,6 +40,16 @@ void downgrade_to_version_2(ResultStore& store) {
       "ALTER TABLE runs DROP COLUMN uid; ALTER TABLE runs DROP COLUMN sweep_id; "
       "ALTER TABLE runs DROP COLUMN job_index; ALTER TABLE runs DROP COLUMN axes; "
       "PRAGMA user_version = 2");
+}
+
+// The message of the StoreError merging `shards` into `target` throws ("" when none).
+std::string merge_error(ResultStore& target, const std::vector<std::string>& shards) {
+  try {
+    merge_shards_into(target, shards);
+  } catch (const StoreError& e) {
+    return e.what();
+  }
+  return "";
 }
 
 TEST(StoreMerge, CopiesFinishedRunsOnceAndIsIdempotent) {
@@ -137,16 +147,39 @@ TEST(StoreMerge, AShardThatFailsWhileCopiedLeavesTheTargetAsItWas) {
   const std::vector<std::string> shards = {dir.file("good.sqlite"), dir.file("bad.sqlite")};
   check_shards(shards, dir.file("all.sqlite"));
   ResultStore target(dir.file("all.sqlite"));
-  try {
-    merge_shards_into(target, shards);
-    FAIL() << "the bad shard was merged";
-  } catch (const StoreError& e) {
-    const std::string message = e.what();
-    EXPECT_EQ(message.rfind(dir.file("bad.sqlite") + ": ", 0), 0u) << message;
-    EXPECT_NE(message.find("nothing was merged"), std::string::npos) << message;
-  }
+  const std::string message = merge_error(target, shards);
+  EXPECT_EQ(message.rfind(target.path() + ": ", 0), 0u) << message;
+  EXPECT_NE(message.find("CHECK constraint failed"), std::string::npos) << message;
+  EXPECT_NE(message.find(dir.file("bad.sqlite")), std::string::npos) << message;
+  EXPECT_NE(message.find("nothing was merged"), std::string::npos) << message;
   EXPECT_EQ(target.query_int("SELECT count(*) FROM runs"), 0);
   EXPECT_EQ(target.query_int("SELECT count(*) FROM trials"), 0);
+}
+
+// A failure writing the target names the target, not the shard being read; one reading a shard
+// names the shard. Either way nothing is merged.
+TEST(StoreMerge, AFailureNamesTheTargetOrTheShardItCameFrom) {
+  TempDir dir;
+  {
+    ResultStore good(dir.file("good.sqlite"));
+    add_run(good, "a", 0, true);
+  }
+  ResultStore target(dir.file("all.sqlite"));
+  target.execute(
+      "CREATE TRIGGER refuse BEFORE INSERT ON trials BEGIN SELECT RAISE(ABORT, 'target says "
+      "no'); END");
+  const std::string refused = merge_error(target, {dir.file("good.sqlite")});
+  EXPECT_EQ(refused.rfind(target.path() + ": ", 0), 0u) << refused;
+  EXPECT_NE(refused.find("target says no"), std::string::npos) << refused;
+  EXPECT_NE(refused.find("nothing was merged"), std::string::npos) << refused;
+  EXPECT_EQ(target.query_int("SELECT count(*) FROM runs"), 0);
+
+  target.execute("DROP TRIGGER refuse");
+  const std::string missing =
+      merge_error(target, {dir.file("good.sqlite"), dir.file("missing.sqlite")});
+  EXPECT_EQ(missing.rfind(dir.file("missing.sqlite") + ": ", 0), 0u) << missing;
+  EXPECT_NE(missing.find("nothing was merged"), std::string::npos) << missing;
+  EXPECT_EQ(target.query_int("SELECT count(*) FROM runs"), 0);
 }
 
 // A shard whose writer still has it open keeps its newest rows in the write-ahead log beside
