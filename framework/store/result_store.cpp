@@ -10,6 +10,8 @@
 #include <cerrno>
 #include <ctime>
 #include <filesystem>
+#include <fstream>
+#include <iterator>
 
 #include "core/path_checks.hpp"
 #include "store/run_uid.hpp"
@@ -92,9 +94,15 @@ void give_runs_derived_uids(sqlite3* db) {
   for (const auto& [id, uid] : uids) set_uid.bind(1, uid).bind(2, id).run();
 }
 
+// Whether process `pid` of this host exists and has not ended. One that ended but that its parent
+// has not reaped yet (a zombie: a job killed with its driver, for a moment) has ended.
 bool process_alive(int64_t pid) {
   if (pid <= 0) return false;
-  return kill(static_cast<pid_t>(pid), 0) == 0 || errno == EPERM;
+  if (kill(static_cast<pid_t>(pid), 0) != 0 && errno != EPERM) return false;
+  std::ifstream stat("/proc/" + std::to_string(pid) + "/stat");
+  const std::string text{std::istreambuf_iterator<char>(stat), std::istreambuf_iterator<char>()};
+  const auto name_end = text.rfind(')');  // "pid (name) state ..."; the name may hold ')'
+  return name_end == std::string::npos || name_end + 2 >= text.size() || text[name_end + 2] != 'Z';
 }
 
 }  // namespace
@@ -253,10 +261,12 @@ std::vector<ResultStore::InterruptedRun> ResultStore::mark_job_runs_interrupted(
   transaction([&] {
     marked.clear();  // a retried transaction starts again
     Statement running(db_,
-                      "SELECT id, coalesce(out_dir, '') FROM runs WHERE sweep_id = ? AND "
-                      "job_index = ? AND status = 'running'");
+                      "SELECT id, coalesce(out_dir, ''), coalesce(host, ''), pid FROM runs "
+                      "WHERE sweep_id = ? AND job_index = ? AND status = 'running'");
     running.bind(1, sweep_id).bind(2, int64_t{job_index});
+    const std::string this_host = host_name();
     while (running.step()) {
+      if (running.column_text(2) == this_host && process_alive(running.column_int(3))) continue;
       marked.push_back({running.column_int(0), running.column_text(1), utc_timestamp(),
                         "an earlier attempt at this sweep job ended without finishing"});
     }

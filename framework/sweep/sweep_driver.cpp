@@ -198,10 +198,9 @@ int run_sweep_job(const std::string& manifest, int index, const RunOptions& opti
       spdlog::info("sweep {} job {} has a completed run already: nothing to do", sweep.id, index);
       return 0;
     }
-    // One process runs a job at a time (the local driver's lock; one array
-    // task per shard), so an earlier attempt still 'running' was killed (a
-    // driver killed, a Slurm time limit, a lost node) on whatever host it ran:
-    // marked so in the database and its run.json.
+    // An earlier attempt still 'running' was killed (a driver killed, a Slurm
+    // time limit, a lost node) on whatever host it ran, unless its process is
+    // alive on this host: marked so in the database and its run.json.
     mark_job_runs_interrupted(store, sweep.id, index);
   }
   Experiment experiment = load_experiment(job.config_path, job.overrides, registries);
