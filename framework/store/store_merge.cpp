@@ -2,6 +2,7 @@
 #include "store/store_merge.hpp"
 
 #include <fmt/format.h>
+#include <fmt/ranges.h>
 
 #include <algorithm>
 
