@@ -2,6 +2,7 @@
 #include "store/result_store.hpp"
 
 #include <fmt/format.h>
+#include <fmt/ranges.h>
 #include <signal.h>
 #include <spdlog/spdlog.h>
 #include <unistd.h>
@@ -9,8 +10,11 @@
 #include <cerrno>
 #include <ctime>
 #include <filesystem>
+#include <fstream>
+#include <iterator>
 
 #include "core/path_checks.hpp"
+#include "store/run_uid.hpp"
 #include "store/statement.hpp"
 
 namespace corrmp {
@@ -66,18 +70,39 @@ CREATE UNIQUE INDEX IF NOT EXISTS runs_uid ON runs(uid);
 CREATE INDEX IF NOT EXISTS runs_sweep ON runs(sweep_id, job_index);
 )sql";
 
-// Version 3: a run's unique id (for merging databases) and its sweep.
+// Version 3: a run's unique id (for merging databases) and its sweep. The runs recorded before
+// get the uid a merge of this database gives them (give_runs_derived_uids).
 constexpr const char* kMigrateToV3 = R"sql(
 ALTER TABLE runs ADD COLUMN uid TEXT;
 ALTER TABLE runs ADD COLUMN sweep_id TEXT;
 ALTER TABLE runs ADD COLUMN job_index INTEGER;
 ALTER TABLE runs ADD COLUMN axes TEXT;
-UPDATE runs SET uid = lower(hex(randomblob(16))) WHERE uid IS NULL;
 )sql";
 
+void give_runs_derived_uids(sqlite3* db) {
+  std::vector<std::pair<int64_t, std::string>> uids;  // run id -> uid
+  Statement runs(db, fmt::format("SELECT {} FROM runs WHERE uid IS NULL",
+                                 fmt::join(kRunIdentityColumns, ", ")));
+  while (runs.step()) {
+    std::vector<std::string> identity;
+    for (size_t i = 0; i < kRunIdentityColumns.size(); ++i) {
+      identity.push_back(runs.column_text(static_cast<int>(i)));
+    }
+    uids.emplace_back(runs.column_int(0), derived_run_uid(identity));  // column 0 is the id
+  }
+  Statement set_uid(db, "UPDATE runs SET uid = ? WHERE id = ?");
+  for (const auto& [id, uid] : uids) set_uid.bind(1, uid).bind(2, id).run();
+}
+
+// Whether process `pid` of this host exists and has not ended. One that ended but that its parent
+// has not reaped yet (a zombie: a job killed with its driver, for a moment) has ended.
 bool process_alive(int64_t pid) {
   if (pid <= 0) return false;
-  return kill(static_cast<pid_t>(pid), 0) == 0 || errno == EPERM;
+  if (kill(static_cast<pid_t>(pid), 0) != 0 && errno != EPERM) return false;
+  std::ifstream stat("/proc/" + std::to_string(pid) + "/stat");
+  const std::string text{std::istreambuf_iterator<char>(stat), std::istreambuf_iterator<char>()};
+  const auto name_end = text.rfind(')');  // "pid (name) state ..."; the name may hold ')'
+  return name_end == std::string::npos || name_end + 2 >= text.size() || text[name_end + 2] != 'Z';
 }
 
 }  // namespace
@@ -197,7 +222,10 @@ void ResultStore::migrate(bool existed_empty) {
           path_, version, kSchemaVersion));
     }
     if (version >= 1 && version < 2) execute("ALTER TABLE trials ADD COLUMN details TEXT");
-    if (version >= 1 && version < 3) execute(kMigrateToV3);
+    if (version >= 1 && version < 3) {
+      execute(kMigrateToV3);
+      give_runs_derived_uids(db_);
+    }
     if (version < kSchemaVersion) {
       execute(kSchema);
       execute(fmt::format("PRAGMA user_version = {}", kSchemaVersion));
@@ -233,10 +261,12 @@ std::vector<ResultStore::InterruptedRun> ResultStore::mark_job_runs_interrupted(
   transaction([&] {
     marked.clear();  // a retried transaction starts again
     Statement running(db_,
-                      "SELECT id, coalesce(out_dir, '') FROM runs WHERE sweep_id = ? AND "
-                      "job_index = ? AND status = 'running'");
+                      "SELECT id, coalesce(out_dir, ''), coalesce(host, ''), pid FROM runs "
+                      "WHERE sweep_id = ? AND job_index = ? AND status = 'running'");
     running.bind(1, sweep_id).bind(2, int64_t{job_index});
+    const std::string this_host = host_name();
     while (running.step()) {
+      if (running.column_text(2) == this_host && process_alive(running.column_int(3))) continue;
       marked.push_back({running.column_int(0), running.column_text(1), utc_timestamp(),
                         "an earlier attempt at this sweep job ended without finishing"});
     }

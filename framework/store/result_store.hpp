@@ -73,9 +73,9 @@ class ResultStore {
   // Marks runs left 'running' by processes of this host that no longer exist as
   // 'interrupted'; returns them.
   std::vector<InterruptedRun> mark_interrupted_runs();
-  // Marks the runs of a sweep's job still 'running' as interrupted, whatever their process:
-  // one process runs a job at a time, so they are earlier attempts that ended or are ending
-  // (a driver killed, a Slurm time limit, a lost node); returns them.
+  // Marks the runs of a sweep's job still 'running' as interrupted: earlier attempts that ended
+  // or are ending (a driver killed, a Slurm time limit, a lost node), on any host, but for one
+  // whose process is alive on this host (the job started twice at once); returns them.
   std::vector<InterruptedRun> mark_job_runs_interrupted(const std::string& sweep_id, int job_index);
 
   // Inserts a run with status 'running' and returns its id.

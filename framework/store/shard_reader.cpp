@@ -29,10 +29,10 @@ const std::vector<std::pair<std::string, std::vector<std::string>>> kFirstColumn
 };
 const std::vector<std::string> kSweepColumns = {"id", "name", "created_at", "jobs", "manifest"};
 
-// An SQLite URI naming `path`, every byte but unreserved ones and '/' percent-encoded.
+// An SQLite URI naming `path` (absolute), every byte but unreserved ones and '/' percent-encoded.
 std::string file_uri(const std::string& path, const char* parameters) {
   std::string uri = "file://";
-  for (const unsigned char c : fs::absolute(path).string()) {
+  for (const unsigned char c : path) {
     if (std::isalnum(c) || c == '/' || c == '-' || c == '.' || c == '_' || c == '~') {
       uri += static_cast<char>(c);
     } else {
@@ -44,7 +44,9 @@ std::string file_uri(const std::string& path, const char* parameters) {
 
 // A database with its write-ahead log beside it has committed rows in that log, which only a
 // reader that uses the log sees; that log and its index already exist, so reading makes no new
-// file. Any other is read as immutable: no lock, no log, nothing made beside it.
+// file (but for an index that is missing: SQLite cannot read the log without one, and makes it).
+// Any other is read as immutable: no lock, no log, nothing made beside it. `path` is the real
+// file, links followed, as SQLite keeps the log beside that.
 const char* read_only_parameters(const std::string& path) {
   std::error_code error;
   const auto log_size = fs::file_size(path + "-wal", error);
@@ -56,9 +58,11 @@ const char* read_only_parameters(const std::string& path) {
 ShardReader::ShardReader(const std::string& path) : path_(path) {
   std::error_code error;
   if (!fs::is_regular_file(path, error)) {
-    throw StoreError(fmt::format("{}: no such database file", path));
+    throw ShardError(fmt::format("{}: no such database file", path));
   }
-  const std::string uri = file_uri(path, read_only_parameters(path));
+  const std::string real_path = fs::canonical(path, error).string();
+  if (error) throw ShardError(fmt::format("{}: cannot open it: {}", path, error.message()));
+  const std::string uri = file_uri(real_path, read_only_parameters(real_path));
   try {
     const int code =
         sqlite3_open_v2(uri.c_str(), &db_, SQLITE_OPEN_READONLY | SQLITE_OPEN_URI, nullptr);
@@ -76,14 +80,16 @@ ShardReader::~ShardReader() { sqlite3_close(db_); }
 void ShardReader::fail(int code, const std::string& during) const {
   const std::string message = db_ ? sqlite3_errmsg(db_) : sqlite3_errstr(code);
   if (code == SQLITE_NOTADB) {
-    throw StoreError(
+    throw ShardError(
         fmt::format("{}: not a result database to merge ({})", path_, sqlite3_errstr(code)));
   }
   if (code == SQLITE_CORRUPT) {
-    throw StoreError(fmt::format("{}: the database is damaged or truncated ({})", path_, message));
+    throw ShardError(fmt::format("{}: the database is damaged or truncated ({})", path_, message));
   }
-  throw StoreError(fmt::format("{}: cannot {} it: {}", path_, during, message));
+  throw ShardError(fmt::format("{}: cannot {} it: {}", path_, during, message));
 }
+
+void ShardReader::read_failed() const { fail(sqlite3_errcode(db_), "read"); }
 
 void ShardReader::read_schema() {
   int64_t version = 0;
@@ -96,24 +102,24 @@ void ShardReader::read_schema() {
                       "'sweeps')");
     while (columns.step()) columns_[columns.column_text(0)].insert(columns.column_text(1));
   } catch (const StoreError&) {
-    fail(sqlite3_errcode(db_), "read");
+    read_failed();
   }
   for (const auto& entry : kFirstColumns) {
     if (!has_table(entry.first)) {
-      throw StoreError(fmt::format(
+      throw ShardError(fmt::format(
           "{}: not a result database to merge (it lacks the runs, trials or metrics table)",
           path_));
     }
   }
   if (version > ResultStore::kSchemaVersion) {
-    throw StoreError(fmt::format(
+    throw ShardError(fmt::format(
         "{}: written by a newer version of this program (schema {}, this one reads up to {})",
         path_, version, ResultStore::kSchemaVersion));
   }
   auto check = [&](const std::string& table, const std::vector<std::string>& wanted) {
     for (const auto& column : wanted) {
       if (columns_[table].count(column) == 0) {
-        throw StoreError(
+        throw ShardError(
             fmt::format("{}: not a result database to merge (its {} table has no column '{}')",
                         path_, table, column));
       }
@@ -129,13 +135,42 @@ void ShardReader::check_integrity() {
     Statement check(db_, "PRAGMA quick_check(1)");
     if (check.step()) verdict = check.column_text(0);
   } catch (const StoreError&) {
-    fail(sqlite3_errcode(db_), "read");
+    read_failed();
   }
   if (verdict != "ok") {
     std::replace(verdict.begin(), verdict.end(), '\n', ' ');  // the error is one line
-    throw StoreError(fmt::format("{}: the database is damaged or truncated ({})", path_, verdict));
+    throw ShardError(fmt::format("{}: the database is damaged or truncated ({})", path_, verdict));
   }
 }
+
+ShardQuery::ShardQuery(ShardReader& shard, const std::string& sql) : shard_(shard) {
+  try {
+    rows_ = std::make_unique<Statement>(shard.handle(), sql);
+  } catch (const StoreError&) {
+    shard_.read_failed();
+  }
+}
+
+ShardQuery::~ShardQuery() = default;
+
+ShardQuery& ShardQuery::bind(int index, int64_t value) {
+  try {
+    rows_->bind(index, value);
+  } catch (const StoreError&) {
+    shard_.read_failed();
+  }
+  return *this;
+}
+
+bool ShardQuery::step() {
+  try {
+    return rows_->step();
+  } catch (const StoreError&) {
+    shard_.read_failed();
+  }
+}
+
+void ShardQuery::reset() { rows_->reset(); }
 
 std::string ShardReader::column_or_null(const std::string& table, const std::string& column) const {
   const auto it = columns_.find(table);

@@ -2,10 +2,12 @@
 #include "store/store_merge.hpp"
 
 #include <fmt/format.h>
+#include <fmt/ranges.h>
 
 #include <algorithm>
 
 #include "core/path_checks.hpp"
+#include "store/run_uid.hpp"
 #include "store/shard_reader.hpp"
 #include "store/statement.hpp"
 
@@ -42,52 +44,33 @@ std::string insert_sql(const std::string& table, const std::vector<std::string>&
   return fmt::format("INSERT INTO {} ({}) VALUES ({})", table, names, values);
 }
 
-uint64_t fnv1a(const std::string& bytes, uint64_t hash) {
-  for (const unsigned char c : bytes) {
-    hash ^= c;
-    hash *= 0x100000001b3ULL;
-  }
-  return hash;
-}
-
-// A uid for a run of a shard written before runs had one: a hash of the fields that tell runs
-// apart, so that merging the shard again finds the run already there.
-std::string derived_uid(const Statement& run, const std::vector<int>& fields) {
-  std::string key;
-  for (int field : fields) {
-    const std::string text = run.column_text(field);
-    key += std::to_string(text.size()) + ":" + text + ";";
-  }
-  return fmt::format("{:016x}{:016x}", fnv1a(key, 0xcbf29ce484222325ULL),
-                     fnv1a(key, 0x84222325cbf29ce4ULL));
-}
-
 MergeCounts copy_shard(ResultStore& target, ShardReader& shard) {
-  sqlite3* in = shard.handle();
   if (shard.has_table("sweeps")) {
-    Statement sweeps(in, "SELECT " + select_list(shard, "sweeps", kSweepColumns) + " FROM sweeps");
+    ShardQuery sweeps(shard,
+                      "SELECT " + select_list(shard, "sweeps", kSweepColumns) + " FROM sweeps");
     Statement insert(target.handle(),
                      "INSERT OR IGNORE INTO sweeps (id, name, created_at, jobs, manifest) VALUES "
                      "(?, ?, ?, ?, ?)");
     while (sweeps.step()) {
-      for (int i = 0; i < 5; ++i) insert.bind_column(i + 1, sweeps, i);
+      for (int i = 0; i < 5; ++i) insert.bind_column(i + 1, sweeps.row(), i);
       insert.run();
     }
   }
   // Columns 0 and 1 are the run's id and uid, then kRunColumns.
-  Statement runs(in, fmt::format("SELECT id, {}, {} FROM runs ORDER BY id",
-                                 shard.column_or_null("runs", "uid"),
-                                 select_list(shard, "runs", kRunColumns)));
+  ShardQuery runs(shard, fmt::format("SELECT id, {}, {} FROM runs ORDER BY id",
+                                     shard.column_or_null("runs", "uid"),
+                                     select_list(shard, "runs", kRunColumns)));
   const auto at = [](const std::string& column) {
     return 2 + static_cast<int>(std::find(kRunColumns.begin(), kRunColumns.end(), column) -
                                 kRunColumns.begin());
   };
-  const std::vector<int> identity = {
-      0, at("experiment"), at("config_hash"), at("seed"), at("started_at"), at("host"), at("pid")};
-  Statement trials(in, fmt::format("SELECT {} FROM trials WHERE run_id = ? ORDER BY rowid",
-                                   select_list(shard, "trials", kTrialColumns)));
-  Statement metrics(in, fmt::format("SELECT {} FROM metrics WHERE run_id = ? ORDER BY rowid",
-                                    select_list(shard, "metrics", kMetricColumns)));
+  std::vector<int> identity;  // the columns of kRunIdentityColumns
+  for (const auto& column : kRunIdentityColumns)
+    identity.push_back(column == "id" ? 0 : at(column));
+  ShardQuery trials(shard, fmt::format("SELECT {} FROM trials WHERE run_id = ? ORDER BY rowid",
+                                       select_list(shard, "trials", kTrialColumns)));
+  ShardQuery metrics(shard, fmt::format("SELECT {} FROM metrics WHERE run_id = ? ORDER BY rowid",
+                                        select_list(shard, "metrics", kMetricColumns)));
   Statement present(target.handle(), "SELECT count(*) FROM runs WHERE uid = ?");
   std::vector<std::string> run_columns = kRunColumns;
   run_columns.push_back("uid");
@@ -97,12 +80,18 @@ MergeCounts copy_shard(ResultStore& target, ShardReader& shard) {
 
   MergeCounts counts;
   while (runs.step()) {
-    if (runs.column_text(at("status")) == "running") {
+    const Statement& run = runs.row();
+    if (run.column_text(at("status")) == "running") {
       ++counts.unfinished;
       continue;
     }
-    const std::string stored_uid = runs.column_text(1);
-    const std::string uid = stored_uid.empty() ? derived_uid(runs, identity) : stored_uid;
+    const std::string stored_uid = run.column_text(1);
+    std::string uid = stored_uid;
+    if (uid.empty()) {  // a shard written before runs had a uid
+      std::vector<std::string> values;
+      for (int column : identity) values.push_back(run.column_text(column));
+      uid = derived_run_uid(values);
+    }
     present.bind(1, uid);
     const bool known = present.step() && present.column_int(0) > 0;
     present.reset();
@@ -111,16 +100,16 @@ MergeCounts copy_shard(ResultStore& target, ShardReader& shard) {
       continue;
     }
     for (size_t i = 0; i < kRunColumns.size(); ++i) {
-      copy_run.bind_column(static_cast<int>(i) + 1, runs, static_cast<int>(i) + 2);
+      copy_run.bind_column(static_cast<int>(i) + 1, run, static_cast<int>(i) + 2);
     }
     copy_run.bind(static_cast<int>(kRunColumns.size()) + 1, uid).run();
     const int64_t new_id = sqlite3_last_insert_rowid(target.handle());
-    const int64_t old_id = runs.column_int(0);
+    const int64_t old_id = run.column_int(0);
     trials.bind(1, old_id);
     while (trials.step()) {
       copy_trial.bind(1, new_id);
       for (size_t i = 0; i < kTrialColumns.size(); ++i) {
-        copy_trial.bind_column(static_cast<int>(i) + 2, trials, static_cast<int>(i));
+        copy_trial.bind_column(static_cast<int>(i) + 2, trials.row(), static_cast<int>(i));
       }
       copy_trial.run();
     }
@@ -129,7 +118,7 @@ MergeCounts copy_shard(ResultStore& target, ShardReader& shard) {
     while (metrics.step()) {
       copy_metric.bind(1, new_id);
       for (size_t i = 0; i < kMetricColumns.size(); ++i) {
-        copy_metric.bind_column(static_cast<int>(i) + 2, metrics, static_cast<int>(i));
+        copy_metric.bind_column(static_cast<int>(i) + 2, metrics.row(), static_cast<int>(i));
       }
       copy_metric.run();
     }
@@ -141,9 +130,19 @@ MergeCounts copy_shard(ResultStore& target, ShardReader& shard) {
 
 void refuse_the_target(const std::string& shard, const std::string& target_path) {
   if (same_file(shard, target_path)) {
-    throw StoreError(fmt::format(
+    throw ShardError(fmt::format(
         "{}: is the database being merged into ({}): merge into another file", shard, target_path));
   }
+}
+
+// `message` of an error of `target` without the target's name in front, as the target's own
+// calls give it (its path) or its statements do (SQLite's name for the file).
+std::string without_target_name(ResultStore& target, const std::string& message) {
+  const char* file = sqlite3_db_filename(target.handle(), "main");
+  for (const std::string& name : {target.path(), std::string(file != nullptr ? file : "")}) {
+    if (!name.empty() && message.rfind(name + ": ", 0) == 0) return message.substr(name.size() + 2);
+  }
+  return message;
 }
 
 }  // namespace
@@ -158,21 +157,25 @@ void check_shards(const std::vector<std::string>& shards, const std::string& tar
 std::vector<MergeCounts> merge_shards_into(ResultStore& target,
                                            const std::vector<std::string>& shards) {
   std::vector<MergeCounts> counts;
-  target.transaction([&] {
-    counts.clear();
-    for (const auto& shard : shards) {
-      refuse_the_target(shard, target.path());
-      try {
+  std::string merging;  // the shard being copied when the target fails
+  try {
+    target.transaction([&] {
+      counts.clear();
+      for (const auto& shard : shards) {
+        merging = shard;
+        refuse_the_target(shard, target.path());
         ShardReader reader(shard);
         counts.push_back(copy_shard(target, reader));
-      } catch (const StoreError& e) {
-        const std::string message = e.what();
-        throw StoreError(message.rfind(shard + ": ", 0) == 0
-                             ? message + "; nothing was merged"
-                             : fmt::format("{}: {}; nothing was merged", shard, message));
       }
-    }
-  });
+      merging.clear();  // a failed commit is the target's alone
+    });
+  } catch (const ShardError& e) {
+    throw StoreError(fmt::format("{}; nothing was merged", e.what()));
+  } catch (const StoreError& e) {
+    throw StoreError(fmt::format("{}: {}{}; nothing was merged", target.path(),
+                                 merging.empty() ? "" : "while merging " + merging + ": ",
+                                 without_target_name(target, e.what())));
+  }
   return counts;
 }
 

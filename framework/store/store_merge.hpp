@@ -23,10 +23,12 @@ void check_shards(const std::vector<std::string>& shards, const std::string& tar
 
 // Copies every finished run of every shard (with its trials and metrics) and the shards'
 // sweeps into `target`, unless `target` already holds the run: runs are matched by their uid
-// (for a shard written before runs had one, a uid made from the run's own fields), so merging
+// (for a shard written before runs had one, the uid made from the run's own fields that
+// upgrading the shard in place also gives it: run_uid.hpp), so merging
 // the same shard twice changes nothing. All the shards in one transaction: when one fails,
-// nothing is merged. The shards are only read; check them first with check_shards. Returns
-// the counts of each shard, in order.
+// nothing is merged, and the StoreError names the shard when reading it failed, the target when
+// writing it did (a full disk, a lock, a row its schema refuses). The shards are only read;
+// check them first with check_shards. Returns the counts of each shard, in order.
 std::vector<MergeCounts> merge_shards_into(ResultStore& target,
                                            const std::vector<std::string>& shards);
 

@@ -129,8 +129,22 @@ int run_on_slurm(const Sweep& sweep, const SweepDriverOptions& options) {
 
 void merge_shards(const std::vector<std::string>& shards, const std::string& db_path) {
   check_shards(shards, db_path);  // before the target is opened or made
-  ResultStore target(db_path);
-  const std::vector<MergeCounts> counts = merge_shards_into(target, shards);
+  // A failed merge leaves no target it made: the file with its -wal and -shm, or the topmost
+  // folder made for it, goes again (NewFolderCleanup removes a new file as well as a folder).
+  std::error_code error;
+  const bool target_is_new = !fs::exists(fs::symlink_status(db_path, error));
+  NewFolderCleanup new_target(db_path);
+  std::vector<MergeCounts> counts;
+  try {
+    ResultStore target(db_path);
+    counts = merge_shards_into(target, shards);
+  } catch (...) {
+    if (target_is_new) {
+      for (const char* suffix : {"-wal", "-shm"}) fs::remove(db_path + suffix, error);
+    }
+    throw;
+  }
+  new_target.keep();
   for (size_t i = 0; i < shards.size(); ++i) {
     fmt::print("{}: {} runs added, {} already in {}{}\n", shards[i], counts[i].added,
                counts[i].present, db_path,
@@ -198,10 +212,9 @@ int run_sweep_job(const std::string& manifest, int index, const RunOptions& opti
       spdlog::info("sweep {} job {} has a completed run already: nothing to do", sweep.id, index);
       return 0;
     }
-    // One process runs a job at a time (the local driver's lock; one array
-    // task per shard), so an earlier attempt still 'running' was killed (a
-    // driver killed, a Slurm time limit, a lost node) on whatever host it ran:
-    // marked so in the database and its run.json.
+    // An earlier attempt still 'running' was killed (a driver killed, a Slurm
+    // time limit, a lost node) on whatever host it ran, unless its process is
+    // alive on this host: marked so in the database and its run.json.
     mark_job_runs_interrupted(store, sweep.id, index);
   }
   Experiment experiment = load_experiment(job.config_path, job.overrides, registries);

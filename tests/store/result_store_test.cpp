@@ -137,5 +137,39 @@ TEST(ResultStore, ARunLeftRunningByAKilledProcessIsMarkedInterrupted) {
   EXPECT_TRUE(store.mark_interrupted_runs().empty());
 }
 
+// A sweep job's run left 'running' is an earlier attempt, on whatever host, unless its process is
+// alive on this host (the same job started twice at once): that one is left alone. A process
+// that ended but is not reaped yet (a zombie) has ended.
+TEST(ResultStore, AJobsRunsAreMarkedInterruptedUnlessTheirProcessIsAliveHere) {
+  TempDir dir;
+  const std::string path = dir.file("r.sqlite");
+  RunRecord job = a_run();
+  job.sweep_id = "s-1";
+  job.job_index = 0;
+  pid_t children[2] = {};
+  for (pid_t& child : children) {
+    child = fork();
+    ASSERT_GE(child, 0);
+    if (child == 0) {
+      ResultStore store(path);
+      store.begin_run(job);
+      _exit(0);  // dies without finishing the run
+    }
+    siginfo_t ended{};
+    ASSERT_EQ(waitid(P_PID, static_cast<id_t>(child), &ended, WEXITED | WNOWAIT), 0);
+  }
+  ASSERT_EQ(waitpid(children[0], nullptr, 0), children[0]);  // children[1] stays a zombie
+  ResultStore store(path);
+  const int64_t live = store.begin_run(job);
+  const int64_t elsewhere = store.begin_run(job);
+  store.execute("UPDATE runs SET host = 'another-host' WHERE id = " + std::to_string(elsewhere));
+  EXPECT_EQ(store.mark_job_runs_interrupted("s-1", 0).size(), 3u);
+  ASSERT_EQ(waitpid(children[1], nullptr, 0), children[1]);
+  EXPECT_EQ(store.query_text("SELECT status FROM runs WHERE id = " + std::to_string(live)),
+            "running");
+  EXPECT_EQ(store.query_text("SELECT status FROM runs WHERE id = " + std::to_string(elsewhere)),
+            "interrupted");
+}
+
 }  // namespace
 }  // namespace corrmp

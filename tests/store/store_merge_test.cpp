@@ -1,7 +1,7 @@
 // Merging shard databases (framework/store/store_merge.hpp): runs, trials,
 // metrics and sweeps copied once, whatever the number of merges; unfinished
 // runs left for later; a version-2 shard read as it is; all the shards in one
-// transaction.
+// transaction; a failure names the file it came from.
 #include "store/store_merge.hpp"
 
 #include <gtest/gtest.h>
@@ -31,6 +31,25 @@ int64_t add_run(ResultStore& store, const std::string& experiment, int job, bool
                        {{"task_success_rate", 0.5}});
   }
   return id;
+}
+
+// Takes `store` back to schema version 2 (runs without uid or sweep), as an older build wrote it.
+void downgrade_to_version_2(ResultStore& store) {
+  store.execute("DROP INDEX runs_uid; DROP INDEX runs_sweep; DROP TABLE sweeps;");
+  store.execute(
+      "ALTER TABLE runs DROP COLUMN uid; ALTER TABLE runs DROP COLUMN sweep_id; "
+      "ALTER TABLE runs DROP COLUMN job_index; ALTER TABLE runs DROP COLUMN axes; "
+      "PRAGMA user_version = 2");
+}
+
+// The message of the StoreError merging `shards` into `target` throws ("" when none).
+std::string merge_error(ResultStore& target, const std::vector<std::string>& shards) {
+  try {
+    merge_shards_into(target, shards);
+  } catch (const StoreError& e) {
+    return e.what();
+  }
+  return "";
 }
 
 TEST(StoreMerge, CopiesFinishedRunsOnceAndIsIdempotent) {
@@ -77,16 +96,31 @@ TEST(StoreMerge, RefusesAMissingShardAndGivesOlderRunsAUid) {
   {
     ResultStore old(dir.file("old.sqlite"));
     add_run(old, "a", 0, true);
-    // Back to version 2, as an older build wrote it.
-    old.execute("DROP INDEX runs_uid; DROP INDEX runs_sweep; DROP TABLE sweeps;");
-    old.execute(
-        "ALTER TABLE runs DROP COLUMN uid; ALTER TABLE runs DROP COLUMN sweep_id; "
-        "ALTER TABLE runs DROP COLUMN job_index; ALTER TABLE runs DROP COLUMN axes; "
-        "PRAGMA user_version = 2");
+    downgrade_to_version_2(old);
   }
   EXPECT_EQ(merge_shard(target, dir.file("old.sqlite")).added, 1);
   EXPECT_EQ(merge_shard(target, dir.file("old.sqlite")).added, 0);
   EXPECT_EQ(target.query_int("SELECT count(*) FROM runs WHERE uid IS NOT NULL"), 1);
+}
+
+// A version-2 shard upgraded after it was merged (opened as a result store, as `report --db`
+// does) gives its runs the uids the merge made from their fields: merging it again adds nothing.
+TEST(StoreMerge, AnOldShardUpgradedAfterItsMergeIsNotMergedAgain) {
+  TempDir dir;
+  const std::string old_path = dir.file("old.sqlite");
+  {
+    ResultStore old(old_path);
+    add_run(old, "a", 0, true);
+    add_run(old, "b", 1, true);
+    downgrade_to_version_2(old);
+  }
+  ResultStore target(dir.file("all.sqlite"));
+  EXPECT_EQ(merge_shard(target, old_path).added, 2);
+  { ResultStore upgraded(old_path); }
+  const MergeCounts again = merge_shard(target, old_path);
+  EXPECT_EQ(again.added, 0);
+  EXPECT_EQ(again.present, 2);
+  EXPECT_EQ(target.query_int("SELECT count(*) FROM runs"), 2);
 }
 
 // All the shards go in one transaction: one that fails while it is copied (here a run the
@@ -113,16 +147,39 @@ TEST(StoreMerge, AShardThatFailsWhileCopiedLeavesTheTargetAsItWas) {
   const std::vector<std::string> shards = {dir.file("good.sqlite"), dir.file("bad.sqlite")};
   check_shards(shards, dir.file("all.sqlite"));
   ResultStore target(dir.file("all.sqlite"));
-  try {
-    merge_shards_into(target, shards);
-    FAIL() << "the bad shard was merged";
-  } catch (const StoreError& e) {
-    const std::string message = e.what();
-    EXPECT_EQ(message.rfind(dir.file("bad.sqlite") + ": ", 0), 0u) << message;
-    EXPECT_NE(message.find("nothing was merged"), std::string::npos) << message;
-  }
+  const std::string message = merge_error(target, shards);
+  EXPECT_EQ(message.rfind(target.path() + ": ", 0), 0u) << message;
+  EXPECT_NE(message.find("CHECK constraint failed"), std::string::npos) << message;
+  EXPECT_NE(message.find(dir.file("bad.sqlite")), std::string::npos) << message;
+  EXPECT_NE(message.find("nothing was merged"), std::string::npos) << message;
   EXPECT_EQ(target.query_int("SELECT count(*) FROM runs"), 0);
   EXPECT_EQ(target.query_int("SELECT count(*) FROM trials"), 0);
+}
+
+// A failure writing the target names the target, not the shard being read; one reading a shard
+// names the shard. Either way nothing is merged.
+TEST(StoreMerge, AFailureNamesTheTargetOrTheShardItCameFrom) {
+  TempDir dir;
+  {
+    ResultStore good(dir.file("good.sqlite"));
+    add_run(good, "a", 0, true);
+  }
+  ResultStore target(dir.file("all.sqlite"));
+  target.execute(
+      "CREATE TRIGGER refuse BEFORE INSERT ON trials BEGIN SELECT RAISE(ABORT, 'target says "
+      "no'); END");
+  const std::string refused = merge_error(target, {dir.file("good.sqlite")});
+  EXPECT_EQ(refused.rfind(target.path() + ": ", 0), 0u) << refused;
+  EXPECT_NE(refused.find("target says no"), std::string::npos) << refused;
+  EXPECT_NE(refused.find("nothing was merged"), std::string::npos) << refused;
+  EXPECT_EQ(target.query_int("SELECT count(*) FROM runs"), 0);
+
+  target.execute("DROP TRIGGER refuse");
+  const std::string missing =
+      merge_error(target, {dir.file("good.sqlite"), dir.file("missing.sqlite")});
+  EXPECT_EQ(missing.rfind(dir.file("missing.sqlite") + ": ", 0), 0u) << missing;
+  EXPECT_NE(missing.find("nothing was merged"), std::string::npos) << missing;
+  EXPECT_EQ(target.query_int("SELECT count(*) FROM runs"), 0);
 }
 
 // A shard whose writer still has it open keeps its newest rows in the write-ahead log beside
@@ -134,6 +191,20 @@ TEST(StoreMerge, AShardStillOpenByItsWriterIsReadThroughItsLog) {
   ASSERT_TRUE(std::filesystem::exists(dir.file("job-0.sqlite-wal")));
   ResultStore target(dir.file("all.sqlite"));
   EXPECT_EQ(merge_shard(target, dir.file("job-0.sqlite")).added, 1);
+  EXPECT_EQ(target.query_int("SELECT count(*) FROM trials"), 2);
+}
+
+// SQLite keeps the log beside the file a link points to: a shard named through a link (its
+// schema checkpointed, its runs still in the log) is read through that log too.
+TEST(StoreMerge, AShardNamedThroughALinkIsReadThroughItsLog) {
+  TempDir dir;
+  ResultStore writer(dir.file("job-0.sqlite"));
+  writer.execute("PRAGMA wal_checkpoint(TRUNCATE)");
+  add_run(writer, "a", 0, true);
+  std::filesystem::create_directories(dir.file("links"));
+  std::filesystem::create_symlink(dir.file("job-0.sqlite"), dir.file("links/job-0.sqlite"));
+  ResultStore target(dir.file("all.sqlite"));
+  EXPECT_EQ(merge_shard(target, dir.file("links/job-0.sqlite")).added, 1);
   EXPECT_EQ(target.query_int("SELECT count(*) FROM trials"), 2);
 }
 

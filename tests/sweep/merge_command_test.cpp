@@ -1,7 +1,7 @@
 // run_experiment merge on inputs that must not be merged or changed: a shard that is not a
 // result database or has a damaged page merges nothing and is named; the shards are only read
 // (an old schema is not upgraded, a refused one gains no -wal or -shm); a target that is one of
-// the shards, or lies below a file, is refused at once.
+// the shards, or lies below a file, is refused at once; a failed merge leaves no new target.
 #include <gtest/gtest.h>
 #include <sys/wait.h>
 
@@ -168,9 +168,41 @@ TEST(MergeCommand, MergingIntoOneOfTheShardsIsRefusedAtOnce) {
     EXPECT_EQ(outcome.out, "run_experiment merge: " + shard +
                                ": is the database being merged into (" + target +
                                "): merge into another file\n");
-    EXPECT_LT(outcome.seconds, 10.0) << "refused at once, not after a lock's timeout";
+    // Catches a wait for the target's lock (the 60 s busy timeout), not a slow machine.
+    EXPECT_LT(outcome.seconds, 40.0) << "refused at once, not after a lock's timeout";
     EXPECT_TRUE(bytes_of(shard) == before) << target << ": the shard was changed";
   }
+}
+
+// A shard that passes the checks but whose run the target refuses (a status its schema does not
+// allow): the line names the target, and a target this merge made is not left behind, nor the
+// folder made for it; a target that was there keeps its runs.
+TEST(MergeCommand, AMergeTheTargetRefusesLeavesNoNewTargetBehind) {
+  TempDir dir;
+  const std::string good = make_shard(dir, "good.sqlite");
+  const std::string refused = dir.file("refused.sqlite");
+  {
+    ResultStore store(refused);
+    store.execute(
+        "DROP TABLE trials; DROP TABLE metrics; DROP TABLE runs; "
+        "CREATE TABLE runs (id INTEGER PRIMARY KEY, experiment, config, config_hash, seed, "
+        "status, started_at, finished_at, git_commit, git_dirty, out_dir, host, pid, failure, "
+        "uid, sweep_id, job_index, axes); "
+        "CREATE TABLE trials (run_id, trial, scenario, expected_action, chosen_action, success, "
+        "failure, details); CREATE TABLE metrics (run_id, name, value); "
+        "INSERT INTO runs (experiment, config, config_hash, seed, status, started_at, uid) "
+        "VALUES ('b', 'c', 'h', 1, 'finished somehow', 't', 'u-1')");
+  }
+  const std::string target = dir.file("new/t.sqlite");
+  const Outcome outcome = merge(dir, good + " " + refused, target);
+  EXPECT_EQ(outcome.exit_code, 2) << outcome.out;
+  EXPECT_EQ(lines(outcome.out), 1) << outcome.out;
+  EXPECT_EQ(outcome.out.rfind("run_experiment merge: " + target + ": ", 0), 0u) << outcome.out;
+  EXPECT_FALSE(fs::exists(dir.file("new"))) << "the new target was left behind";
+
+  const std::string existing = make_shard(dir, "existing.sqlite");
+  EXPECT_EQ(merge(dir, good + " " + refused, existing).exit_code, 2);
+  EXPECT_EQ(completed_runs(existing), 1);
 }
 
 TEST(MergeCommand, ATargetBelowAFileIsRefusedNamingThePath) {

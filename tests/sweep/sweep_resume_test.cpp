@@ -1,6 +1,7 @@
 // Resuming a sweep (docs/sweeps.md, "Resuming"): one driver per sweep and database whatever
 // path names the database, a base config edited since the sweep started refused, and a job
-// that finds its earlier attempt still 'running' marks it interrupted in its run.json too.
+// that finds its earlier attempt still 'running', its process ended, marks it interrupted in its
+// run.json too.
 #include <gtest/gtest.h>
 #include <signal.h>
 #include <sys/wait.h>
@@ -101,7 +102,7 @@ TEST(SweepResume, ABaseConfigEditedSinceTheSweepStartedIsRefused) {
 }
 
 // A resumed job finds its earlier attempt still 'running' (its process, killed with the
-// driver, may not have ended yet) and marks it interrupted: its run.json says so as well.
+// driver, ended but not yet reaped) and marks it interrupted: its run.json says so as well.
 TEST(SweepResume, AnEarlierAttemptMarkedInterruptedByItsJobSaysSoInItsRunJson) {
   TempDir dir;
   const std::string config = dir.write("tiny.yaml", slow_tiny());
@@ -132,6 +133,9 @@ TEST(SweepResume, AnEarlierAttemptMarkedInterruptedByItsJobSaysSoInItsRunJson) {
     std::this_thread::sleep_for(std::chrono::milliseconds(50));
   }
   ASSERT_NE(read_text(run_json).find("\"status\": \"running\""), std::string::npos);
+  ASSERT_EQ(::kill(first.pid(), SIGKILL), 0);
+  siginfo_t ended{};
+  ASSERT_EQ(::waitid(P_PID, static_cast<id_t>(first.pid()), &ended, WEXITED | WNOWAIT), 0);
 
   const Child second(testing::spawn_quietly(job));
   ASSERT_GT(testing::wait_until_positive(
