@@ -60,7 +60,7 @@ TEST(SweepResume, ASecondDriverThroughASymlinkToTheDatabaseIsRefused) {
   std::filesystem::create_symlink(db, dir.file("link.sqlite"));
   std::filesystem::create_directory_symlink(dir.path(), dir.file("alias"));
   for (const std::string& other : {dir.file("link.sqlite"), dir.file("alias/r.sqlite")}) {
-    // Bounded: before the lock took the database's real path, this driver ran the jobs again.
+    // Bounded: a driver that did not see the lock would run the jobs again.
     const Outcome second = run(dir, "--resume " + id + " --threads 1", other, 30);
     EXPECT_EQ(second.exit_code, 1) << other << ": " << second.out;
     EXPECT_NE(second.out.find("another process is running this sweep"), std::string::npos)
