@@ -233,6 +233,15 @@ void ResultStore::migrate(bool existed_empty) {
   });
 }
 
+void ResultStore::set_interrupted(const std::vector<InterruptedRun>& runs) {
+  Statement mark(db_,
+                 "UPDATE runs SET status = 'interrupted', finished_at = ?, failure = ? "
+                 "WHERE id = ?");
+  for (const InterruptedRun& run : runs) {
+    mark.bind(1, run.finished_at).bind(2, run.failure).bind(3, run.id).run();
+  }
+}
+
 std::vector<ResultStore::InterruptedRun> ResultStore::mark_interrupted_runs() {
   std::vector<InterruptedRun> marked;
   transaction([&] {
@@ -246,11 +255,7 @@ std::vector<ResultStore::InterruptedRun> ResultStore::mark_interrupted_runs() {
         marked.push_back({running.column_int(0), running.column_text(2), utc_timestamp(),
                           "the process running it ended without finishing"});
     }
-    Statement mark(db_,
-                   "UPDATE runs SET status = 'interrupted', finished_at = ?, failure = ? "
-                   "WHERE id = ?");
-    for (const InterruptedRun& run : marked)
-      mark.bind(1, run.finished_at).bind(2, run.failure).bind(3, run.id).run();
+    set_interrupted(marked);
   });
   return marked;
 }
@@ -270,11 +275,7 @@ std::vector<ResultStore::InterruptedRun> ResultStore::mark_job_runs_interrupted(
       marked.push_back({running.column_int(0), running.column_text(1), utc_timestamp(),
                         "an earlier attempt at this sweep job ended without finishing"});
     }
-    Statement mark(db_,
-                   "UPDATE runs SET status = 'interrupted', finished_at = ?, failure = ? "
-                   "WHERE id = ?");
-    for (const InterruptedRun& run : marked)
-      mark.bind(1, run.finished_at).bind(2, run.failure).bind(3, run.id).run();
+    set_interrupted(marked);
   });
   return marked;
 }

@@ -105,6 +105,7 @@ class ResultStore {
   void migrate(bool existed_empty);
   void insert_trials(int64_t run_id, const std::vector<TrialRecord>& trials);
   void insert_metrics(int64_t run_id, const std::vector<MetricRecord>& metrics);
+  void set_interrupted(const std::vector<InterruptedRun>& runs);  // inside a transaction
 
   std::string path_;
   sqlite3* db_ = nullptr;

@@ -11,6 +11,7 @@
 
 #include "cnmp/csv_reader.hpp"
 #include "config/test_files.hpp"
+#include "support/sanitized_build.hpp"
 
 namespace corrmp {
 namespace {
@@ -237,18 +238,7 @@ std::string bytes_of(const std::string& path) {
   return text.str();
 }
 
-// Whether this build runs under a sanitizer, whose shadow memory no address-space limit allows.
-#if defined(__SANITIZE_ADDRESS__) || defined(__SANITIZE_THREAD__)
-constexpr bool kSanitized = true;
-#elif defined(__has_feature)
-#if __has_feature(address_sanitizer) || __has_feature(thread_sanitizer)
-constexpr bool kSanitized = true;
-#else
-constexpr bool kSanitized = false;
-#endif
-#else
-constexpr bool kSanitized = false;
-#endif
+using testing::kSanitized;
 
 // An output that is one of the inputs (the same file by any spelling or link) is refused before
 // any work, exit 2, and the input is left as it was.

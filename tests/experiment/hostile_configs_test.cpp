@@ -7,6 +7,7 @@
 #include <filesystem>
 
 #include "report_tool.hpp"
+#include "support/sanitized_build.hpp"
 
 namespace corrmp {
 namespace {
@@ -94,18 +95,7 @@ TEST(HostileConfigs, AbsurdSizesNamesAndListsAreConfigErrorsBeforeAnythingIsWrit
   }
 }
 
-// Whether this build runs under a sanitizer, whose shadow memory no address-space limit allows.
-#if defined(__SANITIZE_ADDRESS__) || defined(__SANITIZE_THREAD__)
-constexpr bool kSanitized = true;
-#elif defined(__has_feature)
-#if __has_feature(address_sanitizer) || __has_feature(thread_sanitizer)
-constexpr bool kSanitized = true;
-#else
-constexpr bool kSanitized = false;
-#endif
-#else
-constexpr bool kSanitized = false;
-#endif
+using testing::kSanitized;
 
 // The CNMP's own weights count in the memory estimate: the widest, deepest network (about 500
 // million parameters) does not fit in 8 GiB and is refused at load, naming the network's key.
