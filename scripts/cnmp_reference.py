@@ -87,7 +87,8 @@ def read_family(folder):
         x = ((t - t[0]) / (t[-1] - t[0]))[:, None]
         demos.append((x, values[:, [col["y1"], col["y2"]]], values[0, [col["c"]]]))
     if not demos:
-        sys.exit(f"cnmp_reference.py: no .csv files in {folder}")
+        print(f"cnmp_reference.py: --data {folder}: no .csv files there", file=sys.stderr)
+        sys.exit(2)
     return demos
 
 
