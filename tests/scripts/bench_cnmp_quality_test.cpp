@@ -67,6 +67,10 @@ TEST(BenchCnmpQuality, WrongArgumentsExitWithTwoAndSayWhy) {
   EXPECT_NE(unknown.err.find("usage: scripts/bench_cnmp_quality"), std::string::npos)
       << unknown.err;
 
+  const Result existing = bench_quality("--write-family " + std::string(PROJECT_DIR) + "/scripts");
+  EXPECT_EQ(existing.exit_code, 2);
+  EXPECT_NE(existing.err.find("already exists"), std::string::npos) << existing.err;
+
   const Result few = bench_quality(kQuick + "--demos 4");
   EXPECT_EQ(few.exit_code, 2);
   EXPECT_NE(few.err.find("--demos 4 is too few"), std::string::npos) << few.err;
