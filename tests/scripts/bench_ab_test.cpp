@@ -11,36 +11,16 @@
 #include <sstream>
 #include <string>
 
+#include "script_run.hpp"
+
 namespace {
 
 namespace fs = std::filesystem;
 
-struct Result {
-  int exit_code = -1;
-  std::string out, err;
-};
+using Result = corrmp::testing::ScriptResult;
 
-std::string read_file(const fs::path& path) {
-  std::ifstream in(path);
-  std::stringstream text;
-  text << in.rdbuf();
-  return text.str();
-}
-
-// Runs scripts/bench_ab with `arguments` (already shell-quoted).
 Result bench_ab(const std::string& arguments) {
-  const fs::path dir = fs::temp_directory_path() / ("bench_ab_test_" + std::to_string(::getpid()));
-  fs::create_directories(dir);
-  const std::string command = std::string("bash ") + PROJECT_DIR + "/scripts/bench_ab " +
-                              arguments + " >" + (dir / "out").string() + " 2>" +
-                              (dir / "err").string();
-  const int status = std::system(command.c_str());
-  Result result;
-  result.exit_code = WIFEXITED(status) ? WEXITSTATUS(status) : -1;
-  result.out = read_file(dir / "out");
-  result.err = read_file(dir / "err");
-  fs::remove_all(dir);
-  return result;
+  return corrmp::testing::run_script("bench_ab", arguments);
 }
 
 // Finds the table's row for `name`: old and new medians (match 2 and 3), their ratio (4), the
