@@ -9,6 +9,8 @@
 #include <filesystem>
 
 #include "config/test_files.hpp"
+#include "store/result_store.hpp"
+#include "support/refused_shard.hpp"
 
 namespace corrmp {
 namespace {
@@ -132,18 +134,7 @@ TEST(StoreMerge, AShardThatFailsWhileCopiedLeavesTheTargetAsItWas) {
     ResultStore good(dir.file("good.sqlite"));
     add_run(good, "a", 0, true);
   }
-  {
-    ResultStore bad(dir.file("bad.sqlite"));
-    bad.execute(
-        "DROP TABLE trials; DROP TABLE metrics; DROP TABLE runs; "
-        "CREATE TABLE runs (id INTEGER PRIMARY KEY, experiment, config, config_hash, seed, "
-        "status, started_at, finished_at, git_commit, git_dirty, out_dir, host, pid, failure, "
-        "uid, sweep_id, job_index, axes); "
-        "CREATE TABLE trials (run_id, trial, scenario, expected_action, chosen_action, success, "
-        "failure, details); CREATE TABLE metrics (run_id, name, value); "
-        "INSERT INTO runs (experiment, config, config_hash, seed, status, started_at, uid) "
-        "VALUES ('b', 'c', 'h', 1, 'finished somehow', 't', 'u-1')");
-  }
+  testing::write_shard_the_target_refuses(dir.file("bad.sqlite"));
   const std::vector<std::string> shards = {dir.file("good.sqlite"), dir.file("bad.sqlite")};
   check_shards(shards, dir.file("all.sqlite"));
   ResultStore target(dir.file("all.sqlite"));

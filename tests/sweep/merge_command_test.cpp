@@ -12,6 +12,7 @@
 
 #include "config/test_files.hpp"
 #include "store/result_store.hpp"
+#include "support/refused_shard.hpp"
 
 namespace corrmp {
 namespace {
@@ -181,18 +182,7 @@ TEST(MergeCommand, AMergeTheTargetRefusesLeavesNoNewTargetBehind) {
   TempDir dir;
   const std::string good = make_shard(dir, "good.sqlite");
   const std::string refused = dir.file("refused.sqlite");
-  {
-    ResultStore store(refused);
-    store.execute(
-        "DROP TABLE trials; DROP TABLE metrics; DROP TABLE runs; "
-        "CREATE TABLE runs (id INTEGER PRIMARY KEY, experiment, config, config_hash, seed, "
-        "status, started_at, finished_at, git_commit, git_dirty, out_dir, host, pid, failure, "
-        "uid, sweep_id, job_index, axes); "
-        "CREATE TABLE trials (run_id, trial, scenario, expected_action, chosen_action, success, "
-        "failure, details); CREATE TABLE metrics (run_id, name, value); "
-        "INSERT INTO runs (experiment, config, config_hash, seed, status, started_at, uid) "
-        "VALUES ('b', 'c', 'h', 1, 'finished somehow', 't', 'u-1')");
-  }
+  testing::write_shard_the_target_refuses(refused);
   const std::string target = dir.file("new/t.sqlite");
   const Outcome outcome = merge(dir, good + " " + refused, target);
   EXPECT_EQ(outcome.exit_code, 2) << outcome.out;
