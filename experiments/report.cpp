@@ -23,10 +23,10 @@
 #include "command_line.hpp"
 #include "core/config/did_you_mean.hpp"
 #include "core/path_checks.hpp"
-#include "experiment/paper_report.hpp"
-#include "experiment/reproduction_figures.hpp"
-#include "experiment/run_comparison.hpp"
-#include "experiment/run_report.hpp"
+#include "report/paper_report.hpp"
+#include "report/reproduction_figures.hpp"
+#include "report/run_comparison.hpp"
+#include "report/run_report.hpp"
 #include "store/result_store.hpp"
 
 namespace {

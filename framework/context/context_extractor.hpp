@@ -35,7 +35,7 @@ class ContextExtractor {
                    Rng& rng) = 0;
   // The context of `segment`; empty for segments that have none (the evaluation asks only for
   // those segments() lists, one call at a time, in trial order:
-  // experiment/environment_evaluation.hpp).
+  // evaluation/environment_evaluation.hpp).
   virtual Eigen::VectorXd extract(const std::string& segment, const Observation& observation) = 0;
   // The segments it gives a context for.
   virtual std::vector<std::string> segments() const = 0;

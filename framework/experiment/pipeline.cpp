@@ -17,13 +17,13 @@
 #include "core/json_writer.hpp"
 #include "core/logging.hpp"
 #include "experiment/demonstration_cache.hpp"
-#include "experiment/environment_evaluation.hpp"
+#include "evaluation/environment_evaluation.hpp"
 #include "experiment/interrupted_runs.hpp"
-#include "experiment/offline_evaluation.hpp"
+#include "evaluation/offline_evaluation.hpp"
 #include "experiment/policy_fitting.hpp"
 #include "experiment/provenance.hpp"
 #include "experiment/training_curves.hpp"
-#include "experiment/trajectory_outputs.hpp"
+#include "evaluation/trajectory_outputs.hpp"
 #include "store/result_store.hpp"
 
 namespace corrmp {

@@ -13,7 +13,7 @@
 #include <string>
 #include <vector>
 
-#include "report_tool.hpp"
+#include "support/report_tool.hpp"
 #include "store/result_store.hpp"
 
 namespace corrmp {

@@ -6,7 +6,7 @@
 #include <algorithm>
 #include <filesystem>
 
-#include "report_tool.hpp"
+#include "support/report_tool.hpp"
 #include "support/sanitized_build.hpp"
 
 namespace corrmp {

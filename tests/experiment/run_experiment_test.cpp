@@ -5,7 +5,7 @@
 #include <filesystem>
 #include <fstream>
 
-#include "report_tool.hpp"
+#include "support/report_tool.hpp"
 #include "store/result_store.hpp"
 
 namespace corrmp {

@@ -1,0 +1,161 @@
+// The reproduction report's figures (report --reproduction; docs/sweeps.md,
+// "Comparing and reporting"), drawn from a sweep's runs and the files in
+// their run directories:
+//  1. ground truth against prediction for one trial of each expected
+//     correction (the paper's Fig. "Comparison of ground-truth, prediction,
+//     and robot execution for different cor-MPs"), from trajectories.csv of
+//     the first seed's run;
+//  2. task success against a swept numeric parameter, or per experiment for a
+//     sweep over seeds only: the mean across seeds with its 95% interval;
+//  3. training curves (loss and validation error against updates per
+//     network), from each run's training_curves.csv;
+//  4. the first seed's autoencoder reconstructions and rope context plots,
+//     copied from the run directory.
+// Each figure is written to <report dir>/figures/ and listed with a caption;
+// a missing input (no run directory, no file) skips the figure with a note.
+#pragma once
+
+#include <cstdint>
+#include <map>
+#include <string>
+#include <vector>
+
+#include "report/paper_report.hpp"
+#include "report/run_summaries.hpp"
+#include "stats/mean_interval.hpp"
+#include "store/result_store.hpp"
+
+namespace corrmp {
+
+// A trial's decision as the trials table records it.
+struct TrialDecision {
+  int trial = 0;
+  std::string expected, chosen;
+  bool success = false;
+};
+
+// What the figures read of a run besides its summary.
+struct RunFiles {
+  std::string recorded;   // runs.out_dir as recorded ("" when none)
+  std::string directory;  // where it was found; "" when it does not exist
+  std::vector<TrialDecision> trials;
+};
+using RunFilesById = std::map<int64_t, RunFiles>;
+
+// The runs' directories and trials. A relative out_dir is looked for from the
+// current directory, then from the database's folder and each of its parents.
+RunFilesById load_run_files(ResultStore& store, const std::vector<RunSummary>& runs);
+
+// The figures made (paths relative to the report's folder) and notes on the
+// ones skipped.
+struct FigureSet {
+  std::vector<ReportFigure> figures;
+  std::vector<std::string> notes;
+};
+
+// Every figure above for `runs`, written under report_dir/figures/.
+FigureSet reproduction_figures(const std::vector<RunSummary>& runs, const RunFilesById& files,
+                               const std::string& report_dir);
+
+// The run of `experiment` with the lowest seed (ties: the lowest id);
+// nullptr when there is none.
+const RunSummary* first_seed_run(const std::vector<RunSummary>& runs,
+                                 const std::string& experiment);
+
+// ---- 1. Ground truth against prediction --------------------------------
+
+struct TrajectoryView {
+  std::string horizontal, vertical;   // trajectory columns (e.g. y right, x up: a top view)
+  std::string focus_segment;          // drawn alone in the second row (the cor-MP)
+  std::vector<std::string> labels;    // the expected corrections, one column each
+  std::vector<std::string> segments;  // segment order (colours); others follow as read
+  double scale = 100.0;               // metres to the unit
+  std::string unit = "cm";
+  std::string execution_note = "";  // what the caption says of the executed path, if anything
+};
+
+// One column per label that a trial of the run expected (the first such trial
+// whose choice matched and succeeded, else whose choice matched, else the
+// first): the whole skill above, the focus segment below, the expert's path
+// (ground truth, grey dashed) beneath the generated one (prediction, coloured
+// by segment); a single column's two panels side by side. Written to
+// report_dir/figures/<name>.png.
+constexpr int kTrajectoryComparisonPanel = 320;  // width and height of a panel
+void add_trajectory_comparison(FigureSet& set, const RunSummary& run, const RunFiles& files,
+                               const TrajectoryView& view, const std::string& report_dir,
+                               const std::string& name);
+
+// ---- 2. Success against a swept parameter ------------------------------
+
+// The sweep axes, other than seeds, whose values are all numbers and take two
+// or more values across the runs; sorted.
+std::vector<std::string> swept_numeric_axes(const std::vector<RunSummary>& runs);
+
+struct SuccessAtValue {
+  std::string value;  // as written
+  double x = 0.0;     // the number, or the value's index on a categorical axis
+  MeanInterval success;
+};
+
+struct SuccessSeries {
+  std::string group;                   // the experiment and the other non-seed axes ("" if none)
+  std::vector<SuccessAtValue> points;  // in axis order
+};
+
+struct SuccessByParameter {
+  std::string key;
+  bool numeric = false;             // every value a number
+  std::vector<std::string> values;  // the axis: increasing, or in order of first run
+  std::vector<SuccessSeries> series;
+  int skipped_runs = 0;  // without the key or a task_success_rate
+};
+
+// Task success (each run's task_success_rate) against the setting `key`
+// (run_setting: a sweep axis, the resolved config, or "experiment"), per
+// group of runs with the same experiment (unless the key is the experiment)
+// and other non-seed axis values: the mean across the group's runs at each
+// value with its 95% Student t interval.
+SuccessByParameter success_by_parameter(const std::vector<RunSummary>& runs,
+                                        const std::string& key);
+
+// The chart (plot/interval_chart.hpp, kIntervalChartWidth x
+// kIntervalChartHeight): success in percent, with intervals clipped to
+// [0, 100] (metric_ranges.hpp), as its title says. Throws std::runtime_error
+// when the PNG cannot be written.
+void write_success_figure(const SuccessByParameter& data, const std::string& png_path);
+
+// group,value,runs,mean,ci_low,ci_high (rates; the intervals clipped to
+// [0, 1] as in the chart, the means not).
+std::string success_csv(const SuccessByParameter& data);
+
+// Against each of swept_numeric_axes, or per experiment without one.
+void add_success_figures(FigureSet& set, const std::vector<RunSummary>& runs,
+                         const std::string& report_dir);
+
+// ---- 3. Training curves -------------------------------------------------
+
+struct TrainingCurve {
+  std::string network;
+  std::vector<double> updates, loss, validation_mean;  // NaN where empty
+};
+
+// The networks' curves of a training_curves.csv, in order of first row.
+// Throws std::runtime_error when it cannot be read or lacks the columns.
+std::vector<TrainingCurve> read_training_curves(const std::string& csv_path);
+
+// Per network, loss above and validation error below against updates: one
+// thin line per run (seed) and, with two or more runs, their mean. Runs
+// without a directory or a training_curves.csv are skipped with a note.
+void add_training_curves(FigureSet& set, const std::string& experiment,
+                         const std::vector<const RunSummary*>& runs, const RunFilesById& files,
+                         const std::string& report_dir);
+
+// ---- 4. Copied figures --------------------------------------------------
+
+// Copies <run dir>/<file> to report_dir/figures/<name>.png with the caption,
+// or notes why it cannot.
+void add_copied_figure(FigureSet& set, const RunSummary& run, const RunFiles& files,
+                       const std::string& file, const std::string& report_dir,
+                       const std::string& name, const std::string& caption);
+
+}  // namespace corrmp
