@@ -144,11 +144,10 @@ TrainingReport train_cnmp(CnmpModel& model, const std::vector<CnmpTrajectory>& t
   const auto parameters = model.network().parameters();
   // Two workers at most. A wide network such as the monolithic baselines' has its own second
   // core when the budget gives one: the layers are shared column by column with a barrier after
-  // each, and at the segment networks' width of 128 the second core gained 1.0-1.4x on the Zen 4
-  // development machine (bench_cnmp BM_update_parallel), at 223 1.3x (1.5-1.6x while the shared
-  // host was quiet). Any other network borrows the core of a thread that waits for others' work
-  // (the last segment network of a loop, or the one trained beside the context extractor); the
-  // team then runs where it is the faster.
+  // each, which gains most on wide layers (docs/performance.md, "Measurements behind the code").
+  // Any other network borrows the core of a thread that waits for others' work (the last segment
+  // network of a loop, or the one trained beside the context extractor); the team then runs where
+  // it is the faster.
   const bool splittable = nn::gemm_float_split_exact() && thread_budget() >= 2;
   const bool own = model.network().parameter_count() >= kTeamParameters && parallel_workers(2) == 2;
   ParallelCnmpStep updater(model.network(), params.learning_rate, splittable ? 2 : 1,

@@ -1,6 +1,7 @@
 // Runs left 'running' by a process that ended without finishing them (kill -9, a crash, a lost
 // node): the next process to open the database marks them 'interrupted' there and in their
-// run.json, so that a run's folder says what the database says (README, "When things go wrong").
+// run.json, so that a run's folder says what the database says (docs/usage.md, "When things go
+// wrong").
 #pragma once
 
 #include <string>

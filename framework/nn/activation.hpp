@@ -63,8 +63,8 @@ template <class S>
 struct Sigmoid {
   // Eigen's logistic, vectorised. For float it is a rational fit on [-9, 15.7] (1 above, exp(x)
   // below), accurate to about one float ulp of 1 in absolute terms, so outputs under 1e-3 are
-  // accurate only to about 1e-3 of themselves (tests/nn/activation_test.cpp). One scalar
-  // std::exp per value had made the autoencoder's output layer 2% of a training step.
+  // accurate only to about 1e-3 of themselves (tests/nn/activation_test.cpp). Vectorised because
+  // a scalar std::exp per value made the output layer a visible part of a training step.
   void forward(ConstMatRef<S> x, MatRef<S> y) const { y = x.array().logistic().matrix(); }
   void backward(ConstMatRef<S> y, ConstMatRef<S> dy, MatRef<S> dx) const {
     dx = (dy.array() * y.array() * (S(1) - y.array())).matrix();

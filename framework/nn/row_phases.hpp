@@ -3,11 +3,11 @@
 // transforms then run on one contiguous run of values per tile column, vectorised over tiles.
 //
 // Rows of the autoencoder's images are 16 or 32 pixels, too short for the compiler to vectorise a
-// split over 4 or 8 tiles, and the scalar loops took 12-19% of a training step (measured on a Zen 4
-// EPYC, one thread, 32 images: 84-89 ms with them, 73-74 ms with the splits skipped, in alternated
-// runs). So for float rows whose width is a multiple of 16, each group of 16 pixels (4 tiles) is
-// split or merged with one 4x4 transpose of SSE registers (x86-64; other machines take the scalar
-// loops everywhere); other rows take the scalar loops. Both give the same values.
+// split over 4 or 8 tiles, and scalar loops cost a noticeable share of a training step
+// (docs/performance.md, "Measurements behind the code"). So for float rows whose width is a
+// multiple of 16, each group of 16 pixels (4 tiles) is split or merged with one 4x4 transpose of
+// SSE registers (x86-64; other machines take the scalar loops everywhere); other rows take the
+// scalar loops. Both give the same values.
 #pragma once
 
 #include <type_traits>

@@ -4,20 +4,14 @@
 //
 // A convolution's call fills chunk-sized matrices that are dead once the call returns: the Winograd
 // term matrices of nn/winograd_conv3x3.hpp and nn/winograd_stride2_conv3x3.hpp and their summed
-// weight-term gradients, the im2col columns of nn/conv2d.hpp and nn/conv_transpose2d.hpp. When
-// every layer kept its own, the paper's network held about 11 MB (by their shapes) of them per
-// data-parallel replica, and a training step on two replicas touched about 50 MB in all, more than
-// the 32 MB L3 cache of the machine the speed goals were set on: each layer wrote to lines of its
-// own that had long left the caches. Shared, a layer writes to the lines the previous layer has
-// just used, likely still in the core's L2 cache. Measured there (2-core Zen 4 EPYC,
-// bench_autoencoder, batch 16, 2 threads, the builds before and after run in alternated pairs;
-// docs/performance.md, "Scratch per thread"): the Winograd layers' buffers 808 -> 922 images/s (16
-// pairs, 15 won), the im2col layers' then 922 -> 957 (16 pairs, 13 won).
+// weight-term gradients, the im2col columns of nn/conv2d.hpp and nn/conv_transpose2d.hpp. With one
+// set per thread instead of one per layer, a layer writes to the lines the previous layer has just
+// used, likely still in the core's L2 cache (docs/performance.md, "Scratch per thread").
 //
 // Rules for a user: a slot's contents are valid only within one call of one layer (the call
 // sizes it with Buffer::resize and expects nothing from an earlier call), and a function using a
 // slot calls nothing that uses the same slot while its contents are needed. Threads never share
-// a slot, so layers of different models may run on different threads at once, as before.
+// a slot, so layers of different models may run on different threads at once.
 #pragma once
 
 #include "nn/buffer.hpp"

@@ -310,7 +310,7 @@ void WinogradConv3x3<S>::write_outputs(const S* bias, Index count, S* images, In
         merge_row(tiles + (h % kTile) * kTile * T + (h / kTile) * TW, T, width_, TW,
                   channel + h * width_);
       // Once the channel is merged: reading a row right after merge_row's narrower stores
-      // would stall on them (store forwarding fails), which cost 2% of a training step.
+      // would stall on them (store forwarding fails).
       const S bias_o = bias[o];
       for (Index i = 0; i < pixels; ++i) channel[i] = std::max(channel[i] + bias_o, floor);
     }

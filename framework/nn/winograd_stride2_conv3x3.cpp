@@ -24,9 +24,8 @@ namespace {
 
 // Tiles per chunk (whole images, at least one): the products of a chunk's terms have this many
 // rows, and the 81 term matrices of one side of a chunk fit in the core's L2 cache (with 64
-// channels, 81 x 64 x 32 floats, 660 KB). Chunks of 16 to 48 tiles trained at the same speed
-// within 2% (Zen 4); chunks of one 4-tile image left the products 4 rows, nn/gemm.hpp's slow
-// remainder case (5% of a step in a profile).
+// channels, 81 x 64 x 32 floats, 660 KB); chunks of one 4-tile image would leave the products 4
+// rows, nn/gemm.hpp's slow remainder case (docs/performance.md, "Measurements behind the code").
 constexpr Index kChunkTiles = 32;
 // Gap between the 81 term matrices of a chunk: the transforms write (or read) all 81 at the same
 // offset, and matrices a power of two apart would fall into the same cache sets.

@@ -46,8 +46,7 @@ namespace corrmp::nn {
 
 /// The layers use this algorithm when both sides have at least this many channels. With few
 /// channels its products are short (3 terms each for the autoencoder's RGB input) and im2col's
-/// (27 terms) run faster: measured on the first layer (3 -> 32 channels, 64x64, 8 images, one
-/// Zen 4 core), im2col 0.25 ms forward, this algorithm 0.45 ms.
+/// (27 terms) run faster (docs/performance.md, "Measurements behind the code").
 constexpr Index kMinStride2WinogradChannels = 16;
 
 template <class S>

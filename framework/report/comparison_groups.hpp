@@ -1,6 +1,6 @@
-// Forming the groups of report --compare (README, "Comparing runs"): every --by key must be
-// a setting of some run, and a group that pools more than seeds (several experiments, or runs
-// that differ in a setting other than a seed) says so.
+// Forming the groups of report --compare (docs/usage.md, "Reports and comparisons"): every --by key
+// must be a setting of some run, and a group that pools more than seeds (several experiments, or
+// runs that differ in a setting other than a seed) says so.
 #pragma once
 
 #include <string>

@@ -1,5 +1,5 @@
-// The trajectory errors among a run's metrics (README, "Where results go"; paper, Table II): the
-// closed-loop <segment>_mp_error_mean_<unit> and _max_<unit> of a task's trials, and, for a run
+// The trajectory errors among a run's metrics (docs/usage.md, "Where results go"; paper, Table II):
+// the closed-loop <segment>_mp_error_mean_<unit> and _max_<unit> of a task's trials, and, for a run
 // with no environment, the held-out demonstrations' <segment>_error_mean and _max (in the data's
 // units). The run table and the comparison give each one a column.
 #pragma once

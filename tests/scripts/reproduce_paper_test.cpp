@@ -1,6 +1,6 @@
-// Tests of scripts/reproduce_paper's help (README, "Reproducing the paper"): it is the script's
-// header comment, whole and nothing after it. The reproduction itself installs, builds and runs
-// for minutes; the sweep and report it calls are tested in tests/sweep and tests/experiment.
+// Tests of scripts/reproduce_paper's help (docs/usage.md, "Reproducing the paper"): it is the
+// script's header comment, whole and nothing after it. The reproduction itself installs, builds and
+// runs for minutes; the sweep and report it calls are tested in tests/sweep and tests/report.
 #include <gtest/gtest.h>
 
 #include <array>
