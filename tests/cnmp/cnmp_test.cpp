@@ -3,6 +3,7 @@
 // up, batches refused, parameter counting and budgets, model-file round trips.
 #include "cnmp/cnmp.hpp"
 
+#include <gmock/gmock.h>
 #include <gtest/gtest.h>
 
 #include <cmath>
@@ -17,6 +18,8 @@
 namespace corrmp {
 namespace {
 
+using ::testing::HasSubstr;
+using ::testing::ThrowsMessage;
 using MatD = nn::Mat<double>;
 
 CnmpArchitecture small_architecture() {
@@ -206,12 +209,8 @@ TEST(CnmpModel, LoadingAMismatchedOrForeignFileFails) {
   other.width = 7;
   nn::Rng init(1);
   Cnmp<float> wrong(other, init);
-  try {
-    wrong.load_from(file);
-    FAIL() << "a width mismatch must be reported";
-  } catch (const std::runtime_error& e) {
-    EXPECT_NE(std::string(e.what()).find("differs from the expected"), std::string::npos);
-  }
+  EXPECT_THAT([&] { wrong.load_from(file); },
+              ThrowsMessage<std::runtime_error>(HasSubstr("differs from the expected")));
   nn::ModelFile foreign;
   foreign.hyper["model"] = "autoencoder";
   foreign.write(dir.file("ae.bin"));

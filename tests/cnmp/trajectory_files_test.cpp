@@ -3,6 +3,7 @@
 // the file and line), and the run's demonstrations are what was read.
 #include "cnmp/trajectory_files.hpp"
 
+#include <gmock/gmock.h>
 #include <gtest/gtest.h>
 
 #include <filesystem>
@@ -18,7 +19,9 @@
 namespace corrmp {
 namespace {
 
+using ::testing::StrEq;
 using testing::TempDir;
+using ::testing::ThrowsMessage;
 
 TrajectoryFilesParams params_for(const std::string& path, const std::string& output) {
   TrajectoryFilesParams params;
@@ -49,12 +52,9 @@ TEST(TrajectoryFiles, BadContentsAreRefusedWhenLoadedNamingTheFileAndLine) {
       parameter_error_of([&] { load_trajectory_files(params_for(nan, "x")); }),
       std::make_pair(std::string("paths"), nan + ":3: non-finite value \"nan\" in column 'x'"));
   const std::string good = dir.write("good.csv", "t,x\n0,0\n1,0.5\n");
-  try {
-    load_trajectory_files(params_for(good, "y"));
-    ADD_FAILURE() << "a column the file lacks was not refused";
-  } catch (const std::invalid_argument& e) {
-    EXPECT_EQ(std::string(e.what()), good + ": no column 'y' (columns: t, x)");
-  }
+  EXPECT_THAT(
+      [&] { load_trajectory_files(params_for(good, "y")); },
+      ThrowsMessage<std::invalid_argument>(StrEq(good + ": no column 'y' (columns: t, x)")));
   EXPECT_EQ(parameter_error_of([&] { load_trajectory_files(params_for(good, "x")); }).first, "");
   TrajectoryFilesParams none = params_for(good, "x");
   none.paths.clear();

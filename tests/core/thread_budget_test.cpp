@@ -2,6 +2,7 @@
 // most the budget's threads, inline when it is 1 or when nested, with deterministic errors.
 #include "core/thread_budget.hpp"
 
+#include <gmock/gmock.h>
 #include <gtest/gtest.h>
 
 #include <atomic>
@@ -19,6 +20,9 @@
 
 namespace corrmp {
 namespace {
+
+using ::testing::StrEq;
+using ::testing::ThrowsMessage;
 
 // Restores the default budget after each test.
 class ThreadBudget : public ::testing::Test {
@@ -105,17 +109,17 @@ TEST_F(ThreadBudget, RethrowsTheLowestIndexAfterTheStartedTasksFinished) {
   for (int budget : {1, 2, 4}) {
     set_thread_budget(budget);
     std::vector<std::atomic<int>> started(40), finished(40);
-    try {
-      parallel_for(40, [&](int i) {
-        started[static_cast<size_t>(i)] = 1;
-        std::this_thread::sleep_for(std::chrono::microseconds(200 * (i % 3)));
-        finished[static_cast<size_t>(i)] = 1;
-        if (i == 9 || i == 13) throw std::runtime_error("task " + std::to_string(i));
-      });
-      ADD_FAILURE() << "no exception with budget " << budget;
-    } catch (const std::runtime_error& e) {
-      EXPECT_EQ(std::string(e.what()), "task 9") << "budget " << budget;
-    }
+    EXPECT_THAT(
+        [&] {
+          parallel_for(40, [&](int i) {
+            started[static_cast<size_t>(i)] = 1;
+            std::this_thread::sleep_for(std::chrono::microseconds(200 * (i % 3)));
+            finished[static_cast<size_t>(i)] = 1;
+            if (i == 9 || i == 13) throw std::runtime_error("task " + std::to_string(i));
+          });
+        },
+        ThrowsMessage<std::runtime_error>(StrEq("task 9")))
+        << "budget " << budget;
     // Every task before the failure ran, and every task started had finished by the time the
     // exception arrived.
     for (int i = 0; i <= 9; ++i) EXPECT_EQ(finished[static_cast<size_t>(i)].load(), 1);

@@ -2,6 +2,7 @@
 // poses in the OpenCV convention, projection and back-projection.
 #include "data/camera_model.hpp"
 
+#include <gmock/gmock.h>
 #include <gtest/gtest.h>
 
 #include <cmath>
@@ -9,6 +10,9 @@
 
 namespace corrmp {
 namespace {
+
+using ::testing::HasSubstr;
+using ::testing::ThrowsMessage;
 
 constexpr double kPi = 3.14159265358979323846;
 
@@ -27,12 +31,7 @@ TEST(CameraIntrinsics, FromVerticalFovPutsTheImageEdgesAtHalfTheFov) {
 TEST(CameraIntrinsics, ValidateNamesTheBadField) {
   CameraIntrinsics k = CameraIntrinsics::from_vertical_fov(32, 32, 1.0);
   k.far = k.near;
-  try {
-    k.validate();
-    FAIL() << "far == near was accepted";
-  } catch (const std::invalid_argument& error) {
-    EXPECT_NE(std::string(error.what()).find("far"), std::string::npos) << error.what();
-  }
+  EXPECT_THAT([&] { k.validate(); }, ThrowsMessage<std::invalid_argument>(HasSubstr("far")));
   k = CameraIntrinsics::from_vertical_fov(32, 32, 1.0);
   k.width = 0;
   EXPECT_THROW(k.validate(), std::invalid_argument);

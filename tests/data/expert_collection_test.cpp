@@ -4,6 +4,7 @@
 // of threads.
 #include "data/expert_collection.hpp"
 
+#include <gmock/gmock.h>
 #include <gtest/gtest.h>
 
 #include <atomic>
@@ -17,6 +18,9 @@
 
 namespace corrmp {
 namespace {
+
+using ::testing::StrEq;
+using ::testing::ThrowsMessage;
 
 // Restores the thread budget after each test.
 class ExpertCollectionTest : public ::testing::Test {
@@ -95,13 +99,13 @@ TEST_F(ExpertCollectionTest, RunningOutOfTriesSaysHowManySucceeded) {
   for (int budget : {1, 2}) {
     set_thread_budget(budget);
     Rng rng(4);
-    try {
-      collect_expert_demonstrations({6, 0, 6, "the expert"}, rng, 2, numbered(2));
-      ADD_FAILURE() << "no error";
-    } catch (const std::runtime_error& e) {
-      EXPECT_EQ(std::string(e.what()), "the expert succeeded on only " + std::to_string(successes) +
-                                           " of the 6 scenarios tried (6 wanted)");
-    }
+    EXPECT_THAT(
+        [&] {
+          collect_expert_demonstrations({6, 0, 6, "the expert"}, rng, 2, numbered(2));
+        },
+        ThrowsMessage<std::runtime_error>(StrEq("the expert succeeded on only " +
+                                                std::to_string(successes) +
+                                                " of the 6 scenarios tried (6 wanted)")));
   }
 }
 
@@ -122,12 +126,12 @@ TEST_F(ExpertCollectionTest, RethrowsTheFirstErrorThatIsNoDroppedDemonstration) 
   for (int budget : {1, 2, 4}) {
     set_thread_budget(budget);
     Rng rng(8);
-    try {
-      collect_expert_demonstrations({500, 0, 1000, "test"}, rng, budget, attempt);
-      ADD_FAILURE() << "no error";
-    } catch (const std::logic_error& e) {
-      EXPECT_EQ(std::string(e.what()), first_fatal) << "budget " << budget;
-    }
+    EXPECT_THAT(
+        [&] {
+          collect_expert_demonstrations({500, 0, 1000, "test"}, rng, budget, attempt);
+        },
+        ThrowsMessage<std::logic_error>(StrEq(first_fatal)))
+        << "budget " << budget;
   }
 }
 

@@ -2,6 +2,7 @@
 // the figure's layout, colours and errors.
 #include "evaluation/trajectory_outputs.hpp"
 
+#include <gmock/gmock.h>
 #include <gtest/gtest.h>
 
 #include <fstream>
@@ -13,7 +14,9 @@
 namespace corrmp {
 namespace {
 
+using ::testing::HasSubstr;
 using testing::TempDir;
+using ::testing::ThrowsMessage;
 
 TaskReport xyz_task() {
   TaskReport task;
@@ -118,14 +121,11 @@ TEST(TrajectoryOutputs, FigureErrorsNameTheFunction) {
   bad_axes.plot_vertical = 3;
   EXPECT_THROW(write_trajectory_figure({a_trial(0, true)}, bad_axes, {}, dir.file("t.png")),
                std::invalid_argument);
-  try {
-    write_trajectory_figure({a_trial(0, true)}, xyz_task(), {}, dir.file("missing/dir/t.png"));
-    ADD_FAILURE() << "no error for an unwritable path";
-  } catch (const std::runtime_error& e) {
-    EXPECT_NE(std::string(e.what()).find("write_trajectory_figure: cannot write"),
-              std::string::npos)
-        << e.what();
-  }
+  EXPECT_THAT(
+      [&] {
+        write_trajectory_figure({a_trial(0, true)}, xyz_task(), {}, dir.file("missing/dir/t.png"));
+      },
+      ThrowsMessage<std::runtime_error>(HasSubstr("write_trajectory_figure: cannot write")));
 }
 
 }  // namespace

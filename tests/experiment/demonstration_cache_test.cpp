@@ -1,6 +1,7 @@
 // Tests of the demonstration cache: exact round trips and corrupt files.
 #include "experiment/demonstration_cache.hpp"
 
+#include <gmock/gmock.h>
 #include <gtest/gtest.h>
 
 #include <fstream>
@@ -9,6 +10,10 @@
 
 namespace corrmp {
 namespace {
+
+using ::testing::AllOf;
+using ::testing::HasSubstr;
+using ::testing::ThrowsMessage;
 
 Demonstration a_demonstration(double value) {
   SegmentTrajectory s;
@@ -64,13 +69,8 @@ TEST(DemonstrationCache, CorruptFilesAreReportedWithTheirName) {
     file.seekp(40);
     file.put('\x7f');
   }
-  try {
-    load_demonstrations(path);
-    FAIL() << "a corrupt cache must be reported";
-  } catch (const std::runtime_error& e) {
-    EXPECT_NE(std::string(e.what()).find(path), std::string::npos);
-    EXPECT_NE(std::string(e.what()).find("checksum"), std::string::npos);
-  }
+  EXPECT_THAT([&] { load_demonstrations(path); },
+              ThrowsMessage<std::runtime_error>(AllOf(HasSubstr(path), HasSubstr("checksum"))));
   std::ofstream(dir.file("junk.bin")) << "not a cache at all";
   EXPECT_THROW(load_demonstrations(dir.file("junk.bin")), std::runtime_error);
 }

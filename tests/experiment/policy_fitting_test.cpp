@@ -3,6 +3,7 @@
 // extractor fails.
 #include "experiment/policy_fitting.hpp"
 
+#include <gmock/gmock.h>
 #include <gtest/gtest.h>
 
 #include <cmath>
@@ -13,6 +14,9 @@
 
 namespace corrmp {
 namespace {
+
+using ::testing::StrEq;
+using ::testing::ThrowsMessage;
 
 // Segments a and b; b's context is its phase, which only the extractor sets.
 DemonstrationSplit demonstrations() {
@@ -101,12 +105,8 @@ TEST(PolicyFitting, AFailingExtractorStopsTheNetworksTrainingBesideIt) {
   SegmentedCnmp policy(params(50'000'000), 7);
   PhaseExtractor extractor(true);
   DemonstrationSplit demos = demonstrations();
-  try {
-    fit_extractor_and_policy(policy, &extractor, demos, fitting());
-    ADD_FAILURE() << "no error";
-  } catch (const std::runtime_error& e) {
-    EXPECT_EQ(std::string(e.what()), "no rope end in image 3");
-  }
+  EXPECT_THAT([&] { fit_extractor_and_policy(policy, &extractor, demos, fitting()); },
+              ThrowsMessage<std::runtime_error>(StrEq("no rope end in image 3")));
   set_thread_budget(saved);
   // Abandoned, not finished: no model for a.
   EXPECT_THROW(mean_of(policy, "a"), std::runtime_error);

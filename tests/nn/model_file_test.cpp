@@ -2,6 +2,7 @@
 // parameters) and one clear error naming the file for every kind of damaged input.
 #include "nn/model_file.hpp"
 
+#include <gmock/gmock.h>
 #include <gtest/gtest.h>
 
 #include <cmath>
@@ -17,6 +18,11 @@
 
 namespace corrmp::nn {
 namespace {
+
+using ::testing::AllOf;
+using ::testing::HasSubstr;
+using ::testing::Not;
+using ::testing::ThrowsMessage;
 
 std::string temp_path(const std::string& name) {
   return ::testing::TempDir() + "corrmp_nn_" + name + ".cmpm";
@@ -48,15 +54,9 @@ ModelFile sample_model() {
 // Expects ModelFile::read(path) to throw a runtime_error whose message names the file and
 // contains `fragment`.
 void expect_read_error(const std::string& path, const std::string& fragment) {
-  try {
-    ModelFile::read(path);
-    ADD_FAILURE() << "reading " << path << " did not throw";
-  } catch (const std::runtime_error& e) {
-    const std::string message = e.what();
-    EXPECT_NE(message.find(path), std::string::npos) << message;
-    EXPECT_NE(message.find(fragment), std::string::npos) << message;
-    EXPECT_EQ(message.find('\n'), std::string::npos) << message;
-  }
+  EXPECT_THAT([&] { ModelFile::read(path); },
+              ThrowsMessage<std::runtime_error>(
+                  AllOf(HasSubstr(path), HasSubstr(fragment), Not(HasSubstr("\n")))));
 }
 
 TEST(ModelFile, RoundTripPreservesHyperparametersAndTensorsBitExactly) {
@@ -178,16 +178,10 @@ TEST(ModelFile, ShapeMismatchThrowsNamingFileTensorAndShapes) {
   out.write(path);
   const ModelFile in = ModelFile::read(path);
   const Mat<float> before = wide.layer(0).weight();
-  try {
-    in.load_parameters(wide.parameters());
-    ADD_FAILURE() << "shape mismatch not detected";
-  } catch (const std::runtime_error& e) {
-    const std::string message = e.what();
-    EXPECT_NE(message.find(path), std::string::npos) << message;
-    EXPECT_NE(message.find("'layers.0.weight' has shape [8, 3], expected [9, 3]"),
-              std::string::npos)
-        << message;
-  }
+  EXPECT_THAT(
+      [&] { in.load_parameters(wide.parameters()); },
+      ThrowsMessage<std::runtime_error>(AllOf(
+          HasSubstr(path), HasSubstr("'layers.0.weight' has shape [8, 3], expected [9, 3]"))));
   EXPECT_EQ(wide.layer(0).weight(), before) << "a failed load must not modify parameters";
   EXPECT_THROW(in.tensor("no.such.tensor", {1}), std::runtime_error);
   std::remove(path.c_str());

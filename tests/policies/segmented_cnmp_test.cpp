@@ -2,6 +2,7 @@
 // networks are bit-identical whatever the thread budget.
 #include "policies/segmented_cnmp.hpp"
 
+#include <gmock/gmock.h>
 #include <gtest/gtest.h>
 
 #include <cmath>
@@ -15,6 +16,9 @@
 namespace corrmp {
 
 namespace {
+
+using ::testing::StrEq;
+using ::testing::ThrowsMessage;
 
 // Demonstrations with segments a, b, c: a sine per segment whose phase is the context.
 std::vector<Demonstration> demonstrations(int count, uint64_t seed) {
@@ -123,12 +127,8 @@ TEST(SegmentedCnmp, AMissingSegmentFailsNamingIt) {
   params.segments.push_back({"d", true});
   SegmentedCnmp policy(params, 11);
   const Rng rng(5);
-  try {
-    policy.fit(demonstrations(3, 1), demonstrations(1, 2), rng);
-    ADD_FAILURE() << "no error";
-  } catch (const std::runtime_error& e) {
-    EXPECT_EQ(std::string(e.what()), "demonstration 0 has no segment 'd'");
-  }
+  EXPECT_THAT([&] { policy.fit(demonstrations(3, 1), demonstrations(1, 2), rng); },
+              ThrowsMessage<std::runtime_error>(StrEq("demonstration 0 has no segment 'd'")));
 }
 
 }  // namespace

@@ -5,6 +5,7 @@
 // --compare and its usage errors. Reference numbers from mpmath and R.
 #include "report/run_comparison.hpp"
 
+#include <gmock/gmock.h>
 #include <gtest/gtest.h>
 #include <sys/wait.h>
 
@@ -19,7 +20,9 @@ namespace corrmp {
 namespace {
 
 using testing::RunSpec;
+using ::testing::StrEq;
 using testing::TempDir;
+using ::testing::ThrowsMessage;
 using testing::trials_of;
 
 RunSpec corridor_run(const std::string& experiment, int successes, double cor_error) {
@@ -389,14 +392,10 @@ TEST(RunComparison, RefusesNoRunsAndAnUnknownBaseline) {
   record_pc_and_mono(store);
   ComparisonOptions options;
   options.baseline = "corridor_ae";
-  try {
-    compare_runs(load_run_summaries(store, {}), options);
-    ADD_FAILURE() << "no error";
-  } catch (const ComparisonError& e) {
-    EXPECT_STREQ(e.what(),
-                 "no group 'corridor_ae' to compare with (the groups: 'corridor_pc', "
-                 "'corridor_mono')");
-  }
+  EXPECT_THAT([&] { compare_runs(load_run_summaries(store, {}), options); },
+              ThrowsMessage<ComparisonError>(
+                  StrEq("no group 'corridor_ae' to compare with (the groups: 'corridor_pc', "
+                        "'corridor_mono')")));
 }
 
 }  // namespace

@@ -2,6 +2,7 @@
 // becomes a new database with a one-line notice; garbage bytes, a truncated
 // database or a directory are refused with the path, before anything is
 // written; every error of a statement names the database file.
+#include <gmock/gmock.h>
 #include <gtest/gtest.h>
 
 #include <filesystem>
@@ -14,6 +15,9 @@
 
 namespace corrmp {
 namespace {
+
+using ::testing::StartsWith;
+using ::testing::ThrowsMessage;
 
 namespace fs = std::filesystem;
 using testing::TempDir;
@@ -112,12 +116,8 @@ TEST(DamagedDatabase, EveryStatementErrorNamesTheDatabase) {
   TempDir dir;
   const std::string path = dir.file("r.sqlite");
   ResultStore store(path);
-  try {
-    store.query_text("SELECT nothing FROM nowhere");
-    FAIL() << "no error";
-  } catch (const StoreError& e) {
-    EXPECT_EQ(std::string(e.what()).rfind(fs::canonical(path).string() + ": ", 0), 0u) << e.what();
-  }
+  EXPECT_THAT([&] { store.query_text("SELECT nothing FROM nowhere"); },
+              ThrowsMessage<StoreError>(StartsWith(fs::canonical(path).string() + ": ")));
 }
 
 }  // namespace

@@ -2,6 +2,7 @@
 // processes, interrupted-run detection, atomic completion.
 #include "store/result_store.hpp"
 
+#include <gmock/gmock.h>
 #include <gtest/gtest.h>
 #include <sys/wait.h>
 #include <unistd.h>
@@ -11,7 +12,9 @@
 namespace corrmp {
 namespace {
 
+using ::testing::HasSubstr;
 using testing::TempDir;
+using ::testing::ThrowsMessage;
 
 RunRecord a_run() {
   RunRecord run;
@@ -39,13 +42,8 @@ TEST(ResultStore, RefusesANewerSchemaVersion) {
     ResultStore store(path);
     store.execute("PRAGMA user_version = 99");
   }
-  try {
-    ResultStore again(path);
-    FAIL() << "a newer schema must be refused";
-  } catch (const StoreError& e) {
-    EXPECT_NE(std::string(e.what()).find("schema version 99 is newer"), std::string::npos)
-        << e.what();
-  }
+  EXPECT_THAT([&] { ResultStore again(path); },
+              ThrowsMessage<StoreError>(HasSubstr("schema version 99 is newer")));
 }
 
 TEST(ResultStore, CompleteRunWritesTrialsMetricsAndStatusTogether) {

@@ -3,6 +3,7 @@
 // round trip through a real Slurm is slurm_round_trip_test.cpp). docs/slurm.md.
 #include "sweep/slurm_launcher.hpp"
 
+#include <gmock/gmock.h>
 #include <gtest/gtest.h>
 #include <sys/stat.h>
 
@@ -17,7 +18,10 @@
 namespace corrmp {
 namespace {
 
+using ::testing::HasSubstr;
+using ::testing::StrEq;
 using testing::TempDir;
+using ::testing::ThrowsMessage;
 
 Sweep a_sweep(int jobs) {
   Sweep sweep;
@@ -152,12 +156,8 @@ TEST(SlurmArrayScript, RefusesWhatAnArrayCannotRun) {
 TEST(SlurmArrayScript, RefusesResourcesAnSbatchLineCannotHold) {
   Sweep sweep = a_sweep(1);
   sweep.slurm.time = "1 hour";
-  try {
-    slurm_array_script(sweep, some_paths());
-    FAIL() << "no error";
-  } catch (const std::invalid_argument& e) {
-    EXPECT_NE(std::string(e.what()).find("slurm.time"), std::string::npos) << e.what();
-  }
+  EXPECT_THAT([&] { slurm_array_script(sweep, some_paths()); },
+              ThrowsMessage<std::invalid_argument>(HasSubstr("slurm.time")));
   sweep.slurm.time = "1-00:00:00";
   sweep.slurm.partition = "a\nb";
   EXPECT_THROW(slurm_array_script(sweep, some_paths()), std::invalid_argument);
@@ -238,13 +238,10 @@ TEST(SlurmArrayScript, ThreadsDefaultToOneOutsideSlurmsCpuRequest) {
 TEST(SlurmSubmit, SaysHowToWriteTheFilesOnlyWhenSbatchIsMissing) {
   TempDir dir;
   const ScopedEnv path("PATH", dir.path().string());  // an empty directory: no sbatch
-  try {
-    submit_slurm(dir.write("array.sbatch", "#!/bin/bash\n"), false);
-    FAIL() << "no error";
-  } catch (const std::runtime_error& e) {
-    EXPECT_EQ(std::string(e.what()),
-              "sbatch not found: is Slurm installed? use --emit slurm DIR to only write the files");
-  }
+  EXPECT_THAT(
+      [&] { submit_slurm(dir.write("array.sbatch", "#!/bin/bash\n"), false); },
+      ThrowsMessage<std::runtime_error>(StrEq(
+          "sbatch not found: is Slurm installed? use --emit slurm DIR to only write the files")));
 }
 
 TEST(RunCommand, CapturesBothOutputsAndTheExitStatus) {

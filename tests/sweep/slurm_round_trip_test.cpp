@@ -3,6 +3,7 @@
 // task's exit status, and resubmitting only that task resumes the sweep. The program
 // the array runs is a recorder standing in for run_experiment. Skipped where Slurm
 // cannot start (not installed, not root). docs/slurm.md.
+#include <gmock/gmock.h>
 #include <gtest/gtest.h>
 #include <sys/stat.h>
 #include <unistd.h>
@@ -17,8 +18,11 @@
 namespace corrmp {
 namespace {
 
+using ::testing::AllOf;
+using ::testing::HasSubstr;
 using testing::LocalSlurm;
 using testing::TempDir;
+using ::testing::ThrowsMessage;
 
 // Records its arguments, one a line, per array task and counts the task's runs; task
 // 2 fails (exit 3) on its first run only.
@@ -140,14 +144,10 @@ TEST(SlurmRoundTrip, SubmitsWithoutWaitingAndReportsWhatSbatchRefuses) {
   sweep.slurm.partition = "no_such_partition";
   const std::string refused =
       write_script(dir.path() / "refused.sbatch", slurm_array_script(sweep, paths));
-  try {
-    submit_slurm(refused, true);
-    FAIL() << "sbatch accepted an unknown partition";
-  } catch (const std::runtime_error& e) {
-    const std::string message = e.what();
-    EXPECT_NE(message.find("sbatch could not submit " + refused), std::string::npos) << message;
-    EXPECT_NE(message.find("Invalid partition"), std::string::npos) << message;
-  }
+  EXPECT_THAT(
+      [&] { submit_slurm(refused, true); },
+      ThrowsMessage<std::runtime_error>(
+          AllOf(HasSubstr("sbatch could not submit " + refused), HasSubstr("Invalid partition"))));
 }
 
 }  // namespace

@@ -3,6 +3,7 @@
 // model files, and image conversions.
 #include "context/autoencoder/conv_autoencoder.hpp"
 
+#include <gmock/gmock.h>
 #include <gtest/gtest.h>
 
 #include <cstdio>
@@ -17,6 +18,9 @@
 namespace corrmp {
 namespace {
 
+using ::testing::AllOf;
+using ::testing::HasSubstr;
+using ::testing::ThrowsMessage;
 using MatD = nn::Mat<double>;
 
 AutoencoderArchitecture tiny_architecture(int image_size) {
@@ -133,14 +137,10 @@ TEST(ConvAutoencoder, RejectsInvalidArchitectures) {
   a = tiny_architecture(1);
   a.kernel_size = 4;  // padding 1: a 1x1 image is smaller than the kernel
   EXPECT_THROW(a.validate(), std::invalid_argument);
-  try {
-    AutoencoderArchitecture b = tiny_architecture(8);
-    b.strides = {2, 2, 2};
-    b.validate();
-    FAIL() << "expected an error";
-  } catch (const std::invalid_argument& e) {
-    EXPECT_NE(std::string(e.what()).find("3 strides but 2 filters"), std::string::npos) << e.what();
-  }
+  AutoencoderArchitecture b = tiny_architecture(8);
+  b.strides = {2, 2, 2};
+  EXPECT_THAT([&] { b.validate(); },
+              ThrowsMessage<std::invalid_argument>(HasSubstr("3 strides but 2 filters")));
 }
 
 TEST(AutoencoderParams, DefaultsAreThePapersAndConfigIsStrict) {
@@ -193,25 +193,15 @@ TEST(ConvAutoencoder, ModelFileWithAnotherArchitectureOrModelIsRejected) {
   AutoencoderArchitecture other = tiny_architecture(8);
   other.latent_size = 3;
   ConvAutoencoder<float> different(other, init);
-  try {
-    different.load_from(file);
-    FAIL() << "expected an error";
-  } catch (const std::runtime_error& e) {
-    const std::string message = e.what();
-    EXPECT_NE(message.find("model file 'ae.cmpm'"), std::string::npos) << message;
-    EXPECT_NE(message.find("architecture"), std::string::npos) << message;
-    EXPECT_NE(message.find("latent 3"), std::string::npos) << message;
-  }
+  EXPECT_THAT(
+      [&] { different.load_from(file); },
+      ThrowsMessage<std::runtime_error>(AllOf(HasSubstr("model file 'ae.cmpm'"),
+                                              HasSubstr("architecture"), HasSubstr("latent 3"))));
 
   file.hyper["model"] = "cnmp";
-  try {
-    model.load_from(file);
-    FAIL() << "expected an error";
-  } catch (const std::runtime_error& e) {
-    EXPECT_NE(std::string(e.what()).find("holds model 'cnmp', expected 'conv_autoencoder'"),
-              std::string::npos)
-        << e.what();
-  }
+  EXPECT_THAT([&] { model.load_from(file); },
+              ThrowsMessage<std::runtime_error>(
+                  HasSubstr("holds model 'cnmp', expected 'conv_autoencoder'")));
 }
 
 TEST(AutoencoderImages, RoundTripAndLayout) {

@@ -4,6 +4,7 @@
 
 #include "sim/render/offscreen_renderer.hpp"
 
+#include <gmock/gmock.h>
 #include <gtest/gtest.h>
 #include <opencv2/imgcodecs.hpp>
 
@@ -12,6 +13,9 @@
 
 namespace corrmp {
 namespace {
+
+using ::testing::HasSubstr;
+using ::testing::ThrowsMessage;
 
 std::string temp_path(const std::string& name) {
   return ::testing::TempDir() + "corrmp_render_" + name;
@@ -62,12 +66,8 @@ TEST(WritePng, FailsClearly) {
   RgbdImage image;
   EXPECT_THROW(write_png(image, temp_path("empty.png")), std::runtime_error);
   image.rgb = cv::Mat(2, 2, CV_8UC3, cv::Scalar::all(0));
-  try {
-    write_png(image, "/nonexistent-dir/x.png");
-    FAIL() << "writing into a missing directory succeeded";
-  } catch (const std::runtime_error& error) {
-    EXPECT_NE(std::string(error.what()).find("/nonexistent-dir/x.png"), std::string::npos);
-  }
+  EXPECT_THAT([&] { write_png(image, "/nonexistent-dir/x.png"); },
+              ThrowsMessage<std::runtime_error>(HasSubstr("/nonexistent-dir/x.png")));
   EXPECT_THROW(write_png(image, temp_path("rgb_ok.png"), temp_path("no_depth.png")),
                std::runtime_error);
 }
