@@ -8,8 +8,8 @@
 // between runs of the same experiment, as Markdown or CSV; with --compare,
 // groups of runs side by side with means and 95% intervals across seeds and
 // Fisher's exact test on their pooled trials (run_comparison.hpp); with
-// --reproduction, the paper's Tables I and II against a sweep's runs
-// (paper_report.hpp) and its figures (reproduction_figures.hpp); with
+// --reproduction, the paper's Tables I and II against a sweep's runs and its
+// figures (reproduction_report.hpp, with the paper's data: paper/paper.hpp); with
 // --plot-success, task success against a setting with 95% intervals.
 #include <CLI/CLI.hpp>
 
@@ -21,10 +21,12 @@
 #include <set>
 
 #include "command_line.hpp"
+#include "core/config/config_error.hpp"
 #include "core/config/did_you_mean.hpp"
 #include "core/path_checks.hpp"
-#include "report/paper_report.hpp"
+#include "paper/paper.hpp"
 #include "report/reproduction_figures.hpp"
+#include "report/reproduction_report.hpp"
 #include "report/run_comparison.hpp"
 #include "report/run_report.hpp"
 #include "store/result_store.hpp"
@@ -164,7 +166,6 @@ int main(int argc, char** argv) {
   if (const auto exit_code = corrmp::parse_command_line(app, argc, argv)) return *exit_code;
   query.completed_only = !all;
   format.status_column = all;
-  if (paper) format.paper_tables = std::string(CORRMP_SOURCE_DIR) + "/assets/paper/tables.yaml";
 
   if (compare && reproduction)
     return usage_error("--compare and --reproduction exclude each other");
@@ -251,24 +252,28 @@ int main(int argc, char** argv) {
         std::cout << "report: wrote " << out_dir << "/compare.md and compare.csv\n";
       }
     } else if (reproduction) {
+      const corrmp::ReproductionSpec spec = corrmp::load_paper();
       corrmp::ReproductionInputs inputs;
       inputs.runs = runs;
-      inputs.paper_tables = std::string(CORRMP_SOURCE_DIR) + "/assets/paper/tables.yaml";
       if (query.sweeps.size() == 1) inputs.sweep = sweep;
       // FIGURES: the report's figures go in inputs.figures (path relative to
-      // out_dir, caption); figures_section (paper_report.hpp) lists them.
-      corrmp::reproduction_report(inputs);  // refuses runs without the paper's experiments
-      corrmp::FigureSet figures =
-          corrmp::reproduction_figures(runs, corrmp::load_run_files(store, runs), out_dir);
+      // out_dir, caption); figures_section (reproduction_report.hpp) lists them.
+      corrmp::reproduction_report(spec, inputs);  // refuses runs without the paper's experiments
+      corrmp::FigureSet figures = corrmp::reproduction_figures(
+          runs, corrmp::load_run_files(store, runs), out_dir, spec.figures);
       inputs.figures = std::move(figures.figures);
       inputs.figure_notes = std::move(figures.notes);
-      corrmp::write_reproduction_report(corrmp::reproduction_report(inputs), out_dir);
+      corrmp::write_reproduction_report(corrmp::reproduction_report(spec, inputs), out_dir);
       std::cout << "report: wrote " << out_dir << "/report.md and report.csv\n";
     } else if (plot_success.empty()) {
-      if (paper && !corrmp::paper_rows_apply(runs, format.paper_tables)) {
-        std::cerr << "report: --paper: the paper's numbers are of the task "
-                  << corrmp::paper_environment(format.paper_tables)
-                  << ", and no selected run is; none appended\n";
+      if (paper) {
+        const corrmp::DecisionTablesSpec tables = corrmp::load_paper().decision_tables;
+        if (corrmp::reference_rows_apply(runs, tables)) {
+          format.reference_rows = corrmp::reference_rows(tables);
+        } else {
+          std::cerr << "report: --paper: the paper's numbers are of the task " << tables.environment
+                    << ", and no selected run is; none appended\n";
+        }
       }
       std::cout << (csv ? corrmp::report_csv(runs, format) : corrmp::report_markdown(runs, format));
     }
@@ -276,6 +281,10 @@ int main(int argc, char** argv) {
     return usage_error(e.what());
   } catch (const corrmp::ReproductionError& e) {
     return usage_error(e.what());
+  } catch (const corrmp::ConfigError& e) {
+    // The paper's data (assets/paper/) does not read: bad input, named at its file and line.
+    std::cerr << "report: " << e.what() << "\n";
+    return 2;
   } catch (const corrmp::StoreError& e) {
     // A database that cannot be used (damaged, a directory, not SQLite) is bad input.
     std::cerr << "report: " << e.what() << "\n";

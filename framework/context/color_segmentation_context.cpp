@@ -73,7 +73,7 @@ Eigen::VectorXd ColorSegmentationContext::extract(const std::string& segment,
   const std::optional<LocatedBlob> blob = locate(observation, params_.segmentation, noise_);
   if (!blob) {
     // Nothing seen: the context says "at the gripper", i.e. no correction.
-    spdlog::debug("color_segmentation: no rope end found at the start of '{}'", segment);
+    spdlog::debug("color_segmentation: no coloured object found at the start of '{}'", segment);
     return Eigen::VectorXd::Zero(3);
   }
   ++accuracy.found;

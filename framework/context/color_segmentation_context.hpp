@@ -21,20 +21,21 @@ namespace corrmp {
 struct ColorSegmentationContextParams {
   std::vector<std::string> segments{"cor"};
   ColorSegmentationParams segmentation;
-  std::vector<std::string> gripper_state{"gripper_mid_x", "gripper_mid_y", "gripper_mid_z"};
-  std::vector<std::string> truth_state{"rope_end_dx", "rope_end_dy", "rope_end_dz"};
+  // The state values are the task's own names: its config gives them.
+  std::vector<std::string> gripper_state;
+  std::vector<std::string> truth_state;
   int figures = 6;
 
   template <class Fields>
   void describe(Fields& f) {
-    f("segments", segments, "segments whose context is the rope end seen at their start");
+    f("segments", segments, "segments whose context is the coloured object seen at their start");
     f("segmentation", segmentation, "colour thresholds, cleaning, clustering and camera noise");
     f("gripper_state", gripper_state,
       "observation state values of the gripper mid-point [x, y, z] the context is relative to",
-      size_is(3));
+      required().size_is(3));
     f("truth_state", truth_state,
-      "observation state values of the true relative rope end, to measure the accuracy "
-      "([] when the observation has none)");
+      "observation state values of the true relative position of the object, to measure the "
+      "accuracy ([] when the observation has none)");
     f("figures", figures, "head-camera frames written with the segmentation overlaid",
       in_range(0, 100));
   }

@@ -11,7 +11,7 @@ namespace corrmp {
 
 void register_builtin_contexts(Registry<ContextExtractor>& contexts) {
   contexts.add<PerfectContextParams>(
-      "perfect", "named simulator state values (corridor x, object x, ...) as the context",
+      "perfect", "named simulator state values (an object's x, ...) as the context",
       [](const PerfectContextParams& p, const BuildContext&) {
         return std::make_unique<PerfectContext>(p);
       });
@@ -22,7 +22,7 @@ void register_builtin_contexts(Registry<ContextExtractor>& contexts) {
       });
   contexts.add<ColorSegmentationContextParams>(
       "color_segmentation",
-      "the rope end found by colour segmentation of the RGB-D head camera, relative to the "
+      "a coloured object found by colour segmentation of the RGB-D head camera, relative to the "
       "gripper mid-point (paper IV-C)",
       [](const ColorSegmentationContextParams& p, const BuildContext& context) {
         return std::make_unique<ColorSegmentationContext>(p,

@@ -40,11 +40,11 @@ struct Outcome {
 
 // What a task reports. Trajectories are in the task's own unit (metres for the
 // Bullet tasks); errors are reported in `error_unit`, `error_scale` of them
-// per trajectory unit.
+// per trajectory unit. Every task declares its own columns and error unit.
 struct TaskReport {
-  std::vector<std::string> trajectory_columns{"x", "y", "z"};
-  std::string error_unit = "cm";
-  double error_scale = 100.0;
+  std::vector<std::string> trajectory_columns;
+  std::string error_unit;
+  double error_scale = 1.0;
   // Segments whose generated trajectory is compared with the expert's (the
   // paper's Table II), in table order; the metric names are
   // <segment>_mp_error_mean_<unit> and <segment>_mp_error_max_<unit>.

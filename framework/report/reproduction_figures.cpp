@@ -14,9 +14,9 @@
 #include <set>
 #include <sstream>
 
-#include "report/metric_ranges.hpp"
 #include "plot/interval_chart.hpp"
 #include "plot/line_figure.hpp"
+#include "report/metric_ranges.hpp"
 #include "store/statement.hpp"
 
 namespace corrmp {
@@ -388,13 +388,13 @@ void add_trajectory_comparison(FigureSet& set, const RunSummary& run, const RunF
 
   std::string caption = fmt::format(
       "Ground truth vs prediction, {} (the paper's comparison of ground truth, prediction and "
-      "execution for the cor-MPs): for one trial of each expected correction ({}), the expert's "
+      "execution for the {}-MPs): for one trial of each expected correction ({}), the expert's "
       "demonstration of the trial's scenario (ground truth, grey dashed) and the trajectory the "
       "policy generated (prediction, coloured by segment), top view in {}; below, the {} segment "
       "alone (in a single column, beside it). The paper's third curve, the executed motion, is "
       "not drawn: trajectories.csv holds the generated and the expert trajectories only, and the "
       "generated one is what the gripper was commanded to follow",
-      run_name(run), chosen_text, view.unit, view.focus_segment);
+      run_name(run), view.focus_segment, chosen_text, view.unit, view.focus_segment);
   if (!view.execution_note.empty()) caption += "; " + view.execution_note;
   if (!absent.empty()) {
     std::string list;
@@ -706,30 +706,19 @@ void add_copied_figure(FigureSet& set, const RunSummary& run, const RunFiles& fi
 // ---- all -----------------------------------------------------------------------
 
 FigureSet reproduction_figures(const std::vector<RunSummary>& runs, const RunFilesById& files,
-                               const std::string& report_dir) {
+                               const std::string& report_dir, const ReproductionFiguresSpec& spec) {
   FigureSet set;
   static const RunFiles kNoFiles;
   auto files_for = [&](const RunSummary& run) {
     const RunFiles* f = files_of(files, run);
     return f != nullptr ? *f : kNoFiles;
   };
-  const std::vector<std::string> segments{"pre", "cor", "post", "full"};
-  TrajectoryView corridor{"y", "x", "cor", {"push", "none", "pull"}, segments};
-  corridor.execution_note =
-      "the corridor's kinematic gripper (sim/kinematic_gripper.hpp) moves through every "
-      "commanded point in straight lines, so its executed path is the prediction up to where a "
-      "failed trial stopped";
-  const TrajectoryView rope{
-      "left_y",
-      "left_x",
-      "cor",
-      {"none", "posterior-to-anterior", "anterior-to-posterior", "lateral", "vertical", "combined"},
-      segments};
-  for (const auto& [experiment, view] : std::vector<std::pair<std::string, TrajectoryView>>{
-           {"corridor_pc", corridor}, {"corridor_ae", corridor}, {"rope_color", rope}}) {
-    if (const RunSummary* run = first_seed_run(runs, experiment)) {
-      add_trajectory_comparison(set, *run, files_for(*run), view, report_dir,
-                                "ground_truth_vs_prediction_" + experiment);
+  for (const auto& comparison : spec.trajectory_comparisons) {
+    for (const auto& experiment : comparison.experiments) {
+      if (const RunSummary* run = first_seed_run(runs, experiment)) {
+        add_trajectory_comparison(set, *run, files_for(*run), comparison.view, report_dir,
+                                  "ground_truth_vs_prediction_" + experiment);
+      }
     }
   }
 
@@ -749,30 +738,16 @@ FigureSet reproduction_figures(const std::vector<RunSummary>& runs, const RunFil
     add_training_curves(set, experiment, of_experiment, files, report_dir);
   }
 
-  if (const RunSummary* run = first_seed_run(runs, "corridor_ae")) {
-    add_copied_figure(
-        set, *run, files_for(*run), "autoencoder_reconstructions.png", report_dir,
-        "autoencoder_reconstructions_corridor_ae",
-        fmt::format("The context autoencoder of {}: validation camera images (upper rows) and "
-                    "their reconstructions (lower rows).",
-                    run_name(*run)));
-  }
-  if (const RunSummary* run = first_seed_run(runs, "rope_color")) {
-    add_copied_figure(
-        set, *run, files_for(*run), "knotting.png", report_dir, "knotting_contexts_rope_color",
-        fmt::format("The paper's knotting figure from {}: left, the correction demonstrations "
-                    "(grey) with the corrections the policy generated in the test trials; right, "
-                    "the contexts (rope end relative to the gripper mid-point, from the colour "
-                    "segmentation): training grey, successful tests green, failures coloured by "
-                    "category.",
-                    run_name(*run)));
-    add_copied_figure(
-        set, *run, files_for(*run), "segmentation_0.png", report_dir,
-        "color_segmentation_rope_color",
-        fmt::format("The colour segmentation of {} on a validation demonstration's head-camera "
-                    "image at the critical point: the rope-end cluster tinted green, its centroid "
-                    "and located 3-D point (yellow) and the true rope end (cyan).",
-                    run_name(*run)));
+  for (const auto& copied : spec.copied) {
+    if (const RunSummary* run = first_seed_run(runs, copied.experiment)) {
+      std::string caption = copied.caption;
+      const std::string placeholder = "{run}", name = run_name(*run);
+      for (size_t at = caption.find(placeholder); at != std::string::npos;
+           at = caption.find(placeholder, at + name.size())) {
+        caption.replace(at, placeholder.size(), name);
+      }
+      add_copied_figure(set, *run, files_for(*run), copied.file, report_dir, copied.name, caption);
+    }
   }
   return set;
 }

@@ -9,10 +9,12 @@
 //     sweep over seeds only: the mean across seeds with its 95% interval;
 //  3. training curves (loss and validation error against updates per
 //     network), from each run's training_curves.csv;
-//  4. the first seed's autoencoder reconstructions and rope context plots,
-//     copied from the run directory.
-// Each figure is written to <report dir>/figures/ and listed with a caption;
-// a missing input (no run directory, no file) skips the figure with a note.
+//  4. figures the runs wrote themselves (a context's or a task's), copied
+//     from the first seed's run directory.
+// Which experiments get figures 1 and 4, and how, is data
+// (ReproductionFiguresSpec). Each figure is written to <report dir>/figures/
+// and listed with a caption; a missing input (no run directory, no file)
+// skips the figure with a note.
 #pragma once
 
 #include <cstdint>
@@ -20,12 +22,19 @@
 #include <string>
 #include <vector>
 
-#include "report/paper_report.hpp"
+#include "core/config/field_rule.hpp"
 #include "report/run_summaries.hpp"
 #include "stats/mean_interval.hpp"
 #include "store/result_store.hpp"
 
 namespace corrmp {
+
+// A figure of the report: its path (relative to the report's folder, or
+// absolute) and its caption.
+struct ReportFigure {
+  std::string path;
+  std::string caption;
+};
 
 // A trial's decision as the trials table records it.
 struct TrialDecision {
@@ -53,10 +62,6 @@ struct FigureSet {
   std::vector<std::string> notes;
 };
 
-// Every figure above for `runs`, written under report_dir/figures/.
-FigureSet reproduction_figures(const std::vector<RunSummary>& runs, const RunFilesById& files,
-                               const std::string& report_dir);
-
 // The run of `experiment` with the lowest seed (ties: the lowest id);
 // nullptr when there is none.
 const RunSummary* first_seed_run(const std::vector<RunSummary>& runs,
@@ -66,12 +71,24 @@ const RunSummary* first_seed_run(const std::vector<RunSummary>& runs,
 
 struct TrajectoryView {
   std::string horizontal, vertical;   // trajectory columns (e.g. y right, x up: a top view)
-  std::string focus_segment;          // drawn alone in the second row (the cor-MP)
-  std::vector<std::string> labels;    // the expected corrections, one column each
+  std::string focus_segment;          // drawn alone in the second row
+  std::vector<std::string> labels;    // the expected labels, one column each
   std::vector<std::string> segments;  // segment order (colours); others follow as read
-  double scale = 100.0;               // metres to the unit
-  std::string unit = "cm";
+  double scale = 1.0;                 // trajectory units to the figure's unit
+  std::string unit;
   std::string execution_note = "";  // what the caption says of the executed path, if anything
+
+  template <class Fields>
+  void describe(Fields& f) {
+    f("horizontal", horizontal, "the trajectory column drawn to the right", required());
+    f("vertical", vertical, "the trajectory column drawn up", required());
+    f("focus_segment", focus_segment, "the segment drawn alone in the second row", required());
+    f("labels", labels, "the expected labels, one column each", required());
+    f("segments", segments, "the segments' order (their colours)", required());
+    f("scale", scale, "trajectory units to the figure's unit", positive());
+    f("unit", unit, "the figure's unit", required());
+    f("execution_note", execution_note, "what the caption says of the executed path");
+  }
 };
 
 // One column per label that a trial of the run expected (the first such trial
@@ -157,5 +174,51 @@ void add_training_curves(FigureSet& set, const std::string& experiment,
 void add_copied_figure(FigureSet& set, const RunSummary& run, const RunFiles& files,
                        const std::string& file, const std::string& report_dir,
                        const std::string& name, const std::string& caption);
+
+// ---- The report's figures -------------------------------------------------
+
+// Figure 1 for the first seed's run of each experiment, in one view.
+struct TrajectoryComparisons {
+  std::vector<std::string> experiments;
+  TrajectoryView view;
+
+  template <class Fields>
+  void describe(Fields& f) {
+    f("experiments", experiments, "the experiments drawn in this view", required());
+    f("view", view, "the view", required());
+  }
+};
+
+// Figure 4: a file of the first seed's run of the experiment; "{run}" in the
+// caption names the run.
+struct CopiedFigure {
+  std::string experiment, file, name, caption;
+
+  template <class Fields>
+  void describe(Fields& f) {
+    f("experiment", experiment, "the experiment whose first seed's run wrote the file", required());
+    f("file", file, "the file in the run directory", required());
+    f("name", name, "the figure's name in the report (without .png)", required());
+    f("caption", caption, "the caption; {run} names the run", required());
+  }
+};
+
+struct ReproductionFiguresSpec {
+  std::vector<TrajectoryComparisons> trajectory_comparisons;
+  std::vector<CopiedFigure> copied;
+
+  template <class Fields>
+  void describe(Fields& f) {
+    f("trajectory_comparisons", trajectory_comparisons,
+      "ground truth against prediction, per view");
+    f("copied", copied, "figures the runs wrote, copied into the report");
+  }
+};
+
+// Figures 1 (in the spec's order), 2, 3 (per experiment, in order of first
+// run) and 4 (in the spec's order) for `runs`, written under
+// report_dir/figures/.
+FigureSet reproduction_figures(const std::vector<RunSummary>& runs, const RunFilesById& files,
+                               const std::string& report_dir, const ReproductionFiguresSpec& spec);
 
 }  // namespace corrmp

@@ -2,7 +2,6 @@
 #include "report/run_report.hpp"
 
 #include <fmt/format.h>
-#include <yaml-cpp/yaml.h>
 
 #include <algorithm>
 #include <cmath>
@@ -55,61 +54,11 @@ std::string varies_text(const RunSummary& run,
   return text;
 }
 
-// The paper's rows (assets/paper/tables.yaml), as report cells.
-struct PaperRow {
-  std::string label, success, decision;
-  std::map<std::string, std::string> errors;  // by the error column's mean metric
-};
-
-std::vector<PaperRow> paper_rows(const std::string& tables_path) {
-  const YAML::Node tables = YAML::LoadFile(tables_path);
-  std::vector<PaperRow> rows;
-  for (const char* key : {"pc", "ae", "mono"}) {
-    const YAML::Node t1 = tables["table_1"][key];
-    const YAML::Node t2 = tables["table_2"][key];
-    // Decision match per expected correction, weighted by how often each was
-    // expected in the paper's draw.
-    double matched = 0.0, expected = 0.0;
-    for (const auto& entry : t1["decision_match"]) {
-      const double count =
-          tables["table_1"]["expected"][entry.first.as<std::string>()].as<double>();
-      matched += count * entry.second.as<double>();
-      expected += count;
-    }
-    PaperRow row{fmt::format("paper: {}", key),
-                 fmt::format("{} of {}", t1["task_success"].as<int>(), expected),
-                 fmt::format("{:.0f}%", 100 * matched / expected),
-                 {}};
-    for (const auto& entry : t2) {  // cor_mp: [mean, max] in cm
-      row.errors[entry.first.as<std::string>() + "_error_mean_cm"] = fmt::format(
-          "{:.2f} / {:.2f}", entry.second[0].as<double>(), entry.second[1].as<double>());
-    }
-    rows.push_back(row);
-  }
-  return rows;
-}
-
 }  // namespace
-
-std::string paper_environment(const std::string& paper_tables) {
-  const YAML::Node environment = YAML::LoadFile(paper_tables)["environment"];
-  return environment ? environment.as<std::string>() : "";
-}
-
-bool paper_rows_apply(const std::vector<RunSummary>& runs, const std::string& paper_tables) {
-  const std::string environment = paper_environment(paper_tables);
-  if (environment.empty()) return true;  // tables that name no task go with any runs
-  return std::any_of(runs.begin(), runs.end(), [&](const RunSummary& run) {
-    const auto type = run.settings.find("environment.type");
-    return type != run.settings.end() && type->second == environment;
-  });
-}
 
 std::string report_markdown(const std::vector<RunSummary>& runs, const ReportFormat& format) {
   const auto varying = varying_settings(runs);
-  std::vector<PaperRow> paper;
-  if (!format.paper_tables.empty() && paper_rows_apply(runs, format.paper_tables))
-    paper = paper_rows(format.paper_tables);
+  const std::vector<ReferenceRow>& paper = format.reference_rows;
   std::vector<ErrorMetric> errors = error_metrics(runs);
   for (const auto& row : paper) {  // the paper's errors get their columns too
     for (const auto& [mean, text] : row.errors) {

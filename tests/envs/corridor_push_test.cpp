@@ -66,6 +66,14 @@ TEST(CorridorPush, DeclaresTheStateValuesItObserves) {
   EXPECT_EQ(keys, env.state_names());  // both sorted
 }
 
+// The corridor's trajectories are gripper positions in metres; its errors are in centimetres.
+TEST(CorridorPush, DeclaresItsColumnsAndErrorUnit) {
+  const TaskReport task = CorridorPush{CorridorPushParams{}}.report();
+  EXPECT_EQ(task.trajectory_columns, (std::vector<std::string>{"x", "y", "z"}));
+  EXPECT_EQ(task.error_unit, "cm");
+  EXPECT_EQ(task.error_scale, 100.0);
+}
+
 TEST(CorridorPush, TouchingTheCorridorFailsTheTrial) {
   CorridorPush env{CorridorPushParams{}};
   const Scenario scenario{{"corridor_offset", 0.025}, {"object_dx", 0.0}, {"object_dy", 0.0}};

@@ -16,24 +16,18 @@
 #include "config/test_files.hpp"
 #include "plot/interval_chart.hpp"
 #include "plot/line_figure.hpp"
+#include "report/reproduction_report.hpp"
+#include "support/figure_runs.hpp"
 #include "support/recorded_runs.hpp"
 
 namespace corrmp {
 namespace {
 
 namespace fs = std::filesystem;
+using testing::files_in;
+using testing::run_of;
 using testing::TempDir;
-
-RunSummary run_of(int64_t id, const std::string& experiment,
-                  std::map<std::string, std::string> axes, std::optional<double> success) {
-  RunSummary run;
-  run.id = id;
-  run.experiment = experiment;
-  run.status = "completed";
-  run.axes = std::move(axes);
-  if (success) run.metrics["task_success_rate"] = *success;
-  return run;
-}
+using testing::write_trajectories;
 
 std::map<std::string, std::string> seeded(int seed, const std::string& updates) {
   return {{"seed", std::to_string(seed)},
@@ -165,32 +159,8 @@ TEST(ReproductionFigures, SuccessChartsAreWrittenAtTheChartsSize) {
             cv::Size(kIntervalChartWidth, kIntervalChartHeight));
 }
 
-// A corridor run directory: trajectories.csv with trials 0 (push), 1 (pull)
-// and 2 (push), segments pre, cor and post of 4 steps each.
-void write_trajectories(const TempDir& dir, const std::string& run) {
-  std::string csv = "trial,segment,step,x,y,z,expert_x,expert_y,expert_z\n";
-  for (int trial = 0; trial < 3; ++trial) {
-    for (const char* segment : {"cor", "post", "pre"}) {  // as the evaluation writes them
-      for (int step = 0; step < 4; ++step) {
-        const double x = 0.4 + 0.01 * step, y = -0.1 + 0.02 * step + 0.01 * trial;
-        csv += fmt::format("{},{},{},{},{},0.03,{},{},0.03\n", trial, segment, step, x, y,
-                           x + 0.002, y - 0.001);
-      }
-    }
-  }
-  dir.write(run + "/trajectories.csv", csv);
-}
-
-RunFiles files_in(const TempDir& dir, const std::string& run) {
-  RunFiles files;
-  files.recorded = files.directory = dir.file(run);
-  files.trials = {
-      {0, "push", "push", true}, {1, "pull", "push", false}, {2, "push", "push", false}};
-  return files;
-}
-
 const TrajectoryView kCorridorView{
-    "y", "x", "cor", {"push", "none", "pull"}, {"pre", "cor", "post"}};
+    "y", "x", "cor", {"push", "none", "pull"}, {"pre", "cor", "post"}, 100.0, "cm"};
 
 TEST(ReproductionFigures, GroundTruthAgainstPredictionHasAColumnPerExpectedCorrection) {
   TempDir dir;
@@ -341,45 +311,6 @@ TEST(ReproductionFigures, RunFilesComeFromTheStoreWithRelativeDirectoriesFound) 
   EXPECT_EQ(trials[1].chosen, "none");
   EXPECT_FALSE(trials[1].success);
   EXPECT_TRUE(trials[0].success);
-}
-
-TEST(ReproductionFigures, TheReportsFiguresComeFromTheFirstSeedsRunsAndCopiedFiles) {
-  TempDir dir;
-  write_trajectories(dir, "pc0");
-  dir.write("pc0/training_curves.csv",
-            "network,update,loss,validation_error_mean,validation_error_max\npre,100,1,0.1,0.2\n");
-  write_trajectories(dir, "pc1");
-  dir.write("ae0/log.txt", "");
-  cv::imwrite(dir.file("ae0/autoencoder_reconstructions.png"),
-              cv::Mat(30, 40, CV_8UC3, cv::Scalar(10, 20, 30)));
-  const std::vector<RunSummary> runs = {run_of(1, "corridor_pc", {{"seed", "1"}}, 0.5),
-                                        run_of(2, "corridor_pc", {{"seed", "0"}}, 1.0),
-                                        run_of(3, "corridor_ae", {{"seed", "0"}}, 0.5),
-                                        run_of(4, "rope_color", {{"seed", "0"}}, 0.0)};
-  RunFilesById files;
-  files[1] = files_in(dir, "pc1");
-  files[2] = files_in(dir, "pc0");
-  files[3] = files_in(dir, "ae0");
-  // Run 4 has no entry: a run the database names no directory for.
-  const FigureSet set = reproduction_figures(runs, files, dir.file("report"));
-  std::vector<std::string> paths;
-  for (const auto& figure : set.figures) paths.push_back(figure.path);
-  EXPECT_EQ(paths,
-            (std::vector<std::string>{"figures/ground_truth_vs_prediction_corridor_pc.png",
-                                      "figures/success_vs_experiment.png",
-                                      "figures/training_curves_corridor_pc.png",
-                                      "figures/autoencoder_reconstructions_corridor_ae.png"}));
-  EXPECT_TRUE(contains(set.figures[0].caption, "corridor_pc run 2 (seed 0)"));
-  EXPECT_EQ(png_size(dir.file("report/figures/autoencoder_reconstructions_corridor_ae.png")),
-            cv::Size(40, 30));
-  EXPECT_TRUE(any_note(set, "ground truth vs prediction (corridor_ae): skipped")) << set.notes[0];
-  EXPECT_TRUE(any_note(set, "ground truth vs prediction (rope_color): skipped"));
-  EXPECT_TRUE(any_note(set, "training curves (corridor_ae)"));
-  EXPECT_TRUE(any_note(set, "knotting.png (rope_color): skipped"));
-  EXPECT_TRUE(any_note(set, "segmentation_0.png (rope_color): skipped"));
-  for (const auto& figure : set.figures) {
-    EXPECT_GT(fs::file_size(dir.file("report/" + figure.path)), 0u) << figure.path;
-  }
 }
 
 }  // namespace

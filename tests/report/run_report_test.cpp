@@ -155,43 +155,23 @@ TEST(RunReport, TabulatesRunsWithTheSettingsTheyVary) {
   EXPECT_EQ(picked[1].id, 3);
 }
 
-TEST(RunReport, AppendsThePapersRows) {
+// Reference rows go below the runs; an error only they have gets its column.
+TEST(RunReport, AppendsReferenceRowsWithTheirErrorColumns) {
   TempDir dir;
   ResultStore store(dir.file("r.sqlite"));
-  add_run(store, "corridor_pc", "environment: {type: corridor_push}\nseed: 0\n", 1.0, 0.2);
+  add_run(store, "lift_a", "seed: 0\n", 1.0, 0.2);
   ReportFormat format;
-  format.paper_tables = std::string(PROJECT_DIR) + "/assets/paper/tables.yaml";
-  EXPECT_TRUE(paper_rows_apply(load_run_summaries(store, {}), format.paper_tables));
+  format.reference_rows = {
+      {"paper: a",
+       "3 of 4",
+       "75%",
+       {{"cor_mp_error_mean_cm", "0.10 / 0.20"}, {"arc_mp_error_mean_cm", "1.50 / 4.00"}}}};
   const std::string markdown = report_markdown(load_run_summaries(store, {}), format);
-  EXPECT_NE(markdown.find("| | paper: pc | | 24 of 25 | 100% | 0.80 / 1.45 | 1.69 / 3.19 |"),
+  EXPECT_NE(markdown.find("| | paper: a | | 3 of 4 | 75% | 0.10 / 0.20 | 1.50 / 4.00 |"),
             std::string::npos)
       << markdown;
-  // The paper's AE decision match: 8 of 9 push, 6 of 6 none, 9 of 10 pull.
-  EXPECT_NE(markdown.find("| | paper: ae | | 25 of 25 | 92% | 0.80 / 0.99 | 2.64 / 4.83 |"),
-            std::string::npos)
+  EXPECT_NE(markdown.find("| 1 | lift_a |  | 4 of 4 | 75% | 0.20 / 0.40 | - |"), std::string::npos)
       << markdown;
-  EXPECT_NE(markdown.find("| | paper: mono | | 17 of 25 | 100% | 1.30 / 1.92 | 5.75 / 7.24 |"),
-            std::string::npos)
-      << markdown;
-  format.status_column = true;  // the paper's rows leave the status empty
-  const std::string with_status = report_markdown(load_run_summaries(store, {}), format);
-  EXPECT_NE(with_status.find("| | paper: pc | | | 24 of 25 | 100% | 0.80 / 1.45 | 1.69 / 3.19 |"),
-            std::string::npos)
-      << with_status;
-}
-
-// The paper's numbers are of the corridor: a selection of another task's runs gets none.
-TEST(RunReport, AppendsNoPaperRowsToRunsOfAnotherTask) {
-  TempDir dir;
-  ResultStore store(dir.file("r.sqlite"));
-  add_run(store, "rope_color", "environment: {type: rope_knot}\nseed: 0\n", 1.0, 0.2);
-  ReportFormat format;
-  format.paper_tables = std::string(PROJECT_DIR) + "/assets/paper/tables.yaml";
-  const auto runs = load_run_summaries(store, {});
-  EXPECT_FALSE(paper_rows_apply(runs, format.paper_tables));
-  const std::string markdown = report_markdown(runs, format);
-  EXPECT_EQ(markdown.find("paper:"), std::string::npos) << markdown;
-  EXPECT_NE(markdown.find("| rope_color |"), std::string::npos) << markdown;
 }
 
 struct ToolOutcome {

@@ -44,7 +44,7 @@ struct ColorSegmentationParams {
     f("value_min", value_min, "smallest HSV value kept", in_range(0.0, 1.0));
     f("morphology_kernel", morphology_kernel, "opening/closing kernel side (px, odd)", at_least(1));
     f("min_blob_area", min_blob_area, "smallest cluster taken (px)", at_least(1));
-    f("cluster", cluster, "which connected component is the rope end", one_of({"largest"}));
+    f("cluster", cluster, "which connected component is the object", one_of({"largest"}));
     f("max_depth_deviation", max_depth_deviation, "depth outlier bound around the median (m)",
       positive());
     f("surface_offset", surface_offset, "push back along the viewing ray to the centre line (m)",

@@ -16,6 +16,7 @@
 #pragma once
 
 #include <cstdint>
+#include <map>
 #include <optional>
 #include <string>
 #include <type_traits>
@@ -133,6 +134,21 @@ class ConfigReader {
     }
   }
 
+  // A map with any keys (such as labels): each value is read as a T under the field's rule.
+  template <class T>
+  static void decode_value(ConfigNode& node, const std::string& path, const FieldRule& rule,
+                           std::map<std::string, T>& value) {
+    if (node.is_null()) node = ConfigNode::map(node.where());
+    if (!node.is_map()) {
+      throw ConfigError(node.where(), path,
+                        std::string("expected a map, got ") + kind_name(node.kind()));
+    }
+    value.clear();
+    for (auto& entry : node.entries()) {
+      decode_value(entry.value, path + "." + entry.key, rule, value[entry.key]);
+    }
+  }
+
   template <class T>
   static void decode_value(ConfigNode& node, const std::string& path, const FieldRule& rule,
                            std::optional<T>& value) {
@@ -164,6 +180,16 @@ class ConfigReader {
                                  const FieldRule& rule) {
     ConfigNode out = ConfigNode::sequence(SourceLocation{"<default>", 0, 0});
     for (const auto& item : value) out.items().push_back(encode_value(item, path, rule));
+    return out;
+  }
+
+  template <class T>
+  static ConfigNode encode_value(const std::map<std::string, T>& value, const std::string& path,
+                                 const FieldRule& rule) {
+    ConfigNode out = ConfigNode::map(SourceLocation{"<default>", 0, 0});
+    for (const auto& [key, item] : value) {
+      out.set(key, encode_value(item, path + "." + key, rule), SourceLocation{"<default>", 0, 0});
+    }
     return out;
   }
 

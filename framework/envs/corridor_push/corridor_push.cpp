@@ -61,6 +61,8 @@ std::unique_ptr<Environment> CorridorPush::clone() const {
 TaskReport CorridorPush::report() const {
   TaskReport report;
   report.trajectory_columns = {"x", "y", "z"};
+  report.error_unit = "cm";  // the paper's Table II; trajectories are in metres
+  report.error_scale = 100.0;
   report.error_segments = {"cor", "post"};  // the paper's Table II
   report.decision_segment = "cor";
   report.decision_labels = {"push", "none", "pull"};

@@ -55,6 +55,8 @@ TaskReport RopeKnot::report() const {
   TaskReport report;
   report.trajectory_columns = {"left_x",  "left_y",  "left_z",  "left_grip",
                                "right_x", "right_y", "right_z", "right_grip"};
+  report.error_unit = "cm";  // trajectories are in metres
+  report.error_scale = 100.0;
   report.error_segments = {"pre", "cor", "post"};
   report.error_columns = {0, 1, 2, 4, 5, 6};     // positions, not grips
   report.relative_columns = {0, 1, 2, 4, 5, 6};  // a correction moves; the grips stay

@@ -7,6 +7,7 @@
 
 #include <stdexcept>
 
+#include "context/color_segmentation_context.hpp"
 #include "core/config/config_reader.hpp"
 
 namespace corrmp {
@@ -46,6 +47,17 @@ TEST(ColorSegmentationParams, ValidateNamesTheBadField) {
   params = ColorSegmentationParams();
   params.depth_noise_std = -0.1;
   EXPECT_THROW(params.validate(), std::invalid_argument);
+}
+
+// The state values the context reads are the task's: its config names them (no default).
+TEST(ColorSegmentationContextParams, TheStateNamesComeFromTheConfig) {
+  ConfigNode missing = ConfigNode::parse("segments: [cor]\n", "context.yaml");
+  ColorSegmentationContextParams params;
+  EXPECT_THROW(ConfigReader::read(missing, "", params), ConfigError);
+  ConfigNode given = ConfigNode::parse("gripper_state: [gx, gy, gz]\n", "context.yaml");
+  ConfigReader::read(given, "", params);
+  EXPECT_EQ(params.gripper_state, (std::vector<std::string>{"gx", "gy", "gz"}));
+  EXPECT_TRUE(params.truth_state.empty());
 }
 
 }  // namespace

@@ -4,6 +4,8 @@
 
 #include <gtest/gtest.h>
 
+#include <map>
+
 #include "core/config/config_loader.hpp"
 #include "test_files.hpp"
 
@@ -136,6 +138,37 @@ TEST(ConfigReader, ErrorsInsideListsOfMapsNameTheElement) {
   const auto path = dir.write("m.yaml", "name: a\nheads:\n  - {width: 4}\n  - {wdth: 4}\n");
   EXPECT_EQ(config_error_of([&] { read_yaml(path); }),
             path + ":4:6: heads[1].wdth: unknown key (did you mean 'width'?)");
+}
+
+struct TableParams {
+  std::map<std::string, double> rates;
+  std::map<std::string, std::vector<int>> counts;
+  template <class F>
+  void describe(F& f) {
+    f("rates", rates, "a rate per label", in_range(0, 1));
+    f("counts", counts, "two counts per label", size_is(2));
+  }
+};
+
+// A map field takes any keys; each value is read as the field's value type under the rule.
+TEST(ConfigReader, MapFieldsReadEveryKeyAndCheckEachValue) {
+  TempDir dir;
+  auto read = [&](const std::string& text) {
+    ConfigNode root = load_config(dir.write("t.yaml", text), {});
+    TableParams params;
+    ConfigReader::read(root, "", params);
+    return params;
+  };
+  const TableParams params = read("rates: {push: 0.5, none: 1}\ncounts: {a: [1, 2]}\n");
+  EXPECT_EQ(params.rates, (std::map<std::string, double>{{"none", 1.0}, {"push", 0.5}}));
+  EXPECT_EQ(params.counts.at("a"), (std::vector<int>{1, 2}));
+  EXPECT_TRUE(read("{}").rates.empty());
+  EXPECT_EQ(config_error_of([&] { read("rates: {push: 2}\n"); }),
+            dir.file("t.yaml") + ":1:15: rates.push: value 2 is out of range: must be in [0, 1]");
+  EXPECT_EQ(config_error_of([&] { read("counts: {a: [1]}\n"); }),
+            dir.file("t.yaml") + ":1:13: counts.a: expected a list of 2 items, got 1");
+  EXPECT_EQ(config_error_of([&] { read("rates: [1]\n"); }),
+            dir.file("t.yaml") + ":1:8: rates: expected a map, got a list");
 }
 
 TEST(ConfigReader, YamlSyntaxErrorNamesTheLocation) {

@@ -31,6 +31,15 @@ TEST(RopeKnot, CorrectionsAreLabelledByTheAxesTheyMoveAlong) {
   }
 }
 
+// Both grippers' positions (metres) and grips; the errors are in centimetres.
+TEST(RopeKnot, DeclaresItsColumnsAndErrorUnit) {
+  const TaskReport task = RopeKnot{RopeKnotEnvironmentParams{}}.report();
+  EXPECT_EQ(task.trajectory_columns.size(), 8u);
+  EXPECT_EQ(task.trajectory_columns.front(), "left_x");
+  EXPECT_EQ(task.error_unit, "cm");
+  EXPECT_EQ(task.error_scale, 100.0);
+}
+
 TEST(RopeKnot, TheExpertsSegmentsReplayThroughTheEnvironment) {
   RopeKnot env{RopeKnotEnvironmentParams{}};
   RopeExpert expert{RopeExpertParams{}};

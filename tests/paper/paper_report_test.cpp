@@ -2,7 +2,7 @@
 // experiments against assets/paper/tables.yaml with intervals across seeds and
 // verdicts, the rope section, the figures, report.csv holding the same cells,
 // and the errors. Reference intervals from mpmath (t(0.975, 2) = 4.302653).
-#include "report/paper_report.hpp"
+#include "paper/paper.hpp"
 
 #include <gtest/gtest.h>
 
@@ -20,7 +20,10 @@ using testing::RunSpec;
 using testing::TempDir;
 using testing::TrialSpec;
 
-const std::string kPaperTables = std::string(PROJECT_DIR) + "/assets/paper/tables.yaml";
+const ReproductionSpec& paper() {
+  static const ReproductionSpec spec = load_paper(std::string(PROJECT_DIR) + "/assets/paper");
+  return spec;
+}
 
 struct CorridorNumbers {
   double success, success_none, match_push, cor_mean, cor_max, post_mean, post_max;
@@ -137,10 +140,9 @@ ReproductionReport sweep_report(ResultStore& store, std::vector<ReportFigure> fi
   ReportQuery query;
   query.sweeps = {"s1"};
   inputs.runs = load_run_summaries(store, query);
-  inputs.paper_tables = kPaperTables;
   inputs.sweep = find_sweep(store, "s1");
   inputs.figures = std::move(figures);
-  return reproduction_report(inputs);
+  return reproduction_report(paper(), inputs);
 }
 
 TEST(PaperReport, TableOneHoldsMeansWithIntervalsBesideThePapersNumbers) {
@@ -313,16 +315,6 @@ TEST(PaperReport, ListsTheFiguresItIsGiven) {
   EXPECT_NE(report.markdown.find("## Figures\n\n![Figure 1: A](a.png)"), std::string::npos);
 }
 
-TEST(PaperReport, VerdictsAllowForThePapersRounding) {
-  EXPECT_EQ(reproduction_verdict(3, 5.0 / 6, 5.0 / 6, 0.83, 0.005, true), "reproduced");
-  EXPECT_EQ(reproduction_verdict(3, 0.84, 0.9, 0.83, 0.005, true), "better");
-  EXPECT_EQ(reproduction_verdict(3, 0.5, 0.8, 0.83, 0.005, true), "worse");
-  EXPECT_EQ(reproduction_verdict(3, 0.5, 0.8, 0.83, 0.005, false), "better");
-  EXPECT_EQ(reproduction_verdict(3, 0.96, 0.97, 0.96, 0.0, true), "reproduced");
-  EXPECT_EQ(reproduction_verdict(1, NAN, NAN, 0.5, 0.0, true), "no interval (1 run)");
-  EXPECT_EQ(reproduction_verdict(0, NAN, NAN, 0.5, 0.0, true), "no runs");
-}
-
 TEST(PaperReport, WritesBothFilesAndRefusesRunsOfNoPaperExperiment) {
   TempDir dir;
   ResultStore store(dir.file("r.sqlite"));
@@ -341,8 +333,7 @@ TEST(PaperReport, WritesBothFilesAndRefusesRunsOfNoPaperExperiment) {
   others.experiments = {"curves_demo"};
   ReproductionInputs inputs;
   inputs.runs = load_run_summaries(store, others);
-  inputs.paper_tables = kPaperTables;
-  EXPECT_THROW(reproduction_report(inputs), ReproductionError);
+  EXPECT_THROW(reproduction_report(paper(), inputs), ReproductionError);
 }
 
 }  // namespace

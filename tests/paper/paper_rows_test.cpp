@@ -1,0 +1,74 @@
+// Tests of the paper's rows below the run table (report --paper): its PC, AE
+// and Mono numbers from assets/paper/tables.yaml, for runs of its task only.
+#include <gtest/gtest.h>
+
+#include "config/test_files.hpp"
+#include "paper/paper.hpp"
+#include "report/run_report.hpp"
+
+namespace corrmp {
+namespace {
+
+using testing::TempDir;
+
+const DecisionTablesSpec& tables() {
+  static const DecisionTablesSpec spec =
+      load_paper(std::string(PROJECT_DIR) + "/assets/paper").decision_tables;
+  return spec;
+}
+
+int64_t add_run(ResultStore& store, const std::string& experiment, const std::string& config,
+                double success, double cor_error) {
+  const int64_t id = store.begin_run({experiment, config, "hash", 0, "", false, "", "", 0, ""});
+  std::vector<TrialRecord> trials;
+  for (int t = 0; t < 4; ++t) trials.push_back({t, "{}", "push", "push", t < 4 * success, "", ""});
+  store.complete_run(id, trials,
+                     {{"task_success_rate", success},
+                      {"decision_match_rate", 0.75},
+                      {"cor_mp_error_mean_cm", cor_error},
+                      {"cor_mp_error_max_cm", 2 * cor_error},
+                      {"demonstrations_train", 100}});
+  return id;
+}
+
+TEST(PaperRows, AppendsThePapersRows) {
+  TempDir dir;
+  ResultStore store(dir.file("r.sqlite"));
+  add_run(store, "corridor_pc", "environment: {type: corridor_push}\nseed: 0\n", 1.0, 0.2);
+  ReportFormat format;
+  EXPECT_TRUE(reference_rows_apply(load_run_summaries(store, {}), tables()));
+  format.reference_rows = reference_rows(tables());
+  const std::string markdown = report_markdown(load_run_summaries(store, {}), format);
+  EXPECT_NE(markdown.find("| | paper: pc | | 24 of 25 | 100% | 0.80 / 1.45 | 1.69 / 3.19 |"),
+            std::string::npos)
+      << markdown;
+  // The paper's AE decision match: 8 of 9 push, 6 of 6 none, 9 of 10 pull.
+  EXPECT_NE(markdown.find("| | paper: ae | | 25 of 25 | 92% | 0.80 / 0.99 | 2.64 / 4.83 |"),
+            std::string::npos)
+      << markdown;
+  EXPECT_NE(markdown.find("| | paper: mono | | 17 of 25 | 100% | 1.30 / 1.92 | 5.75 / 7.24 |"),
+            std::string::npos)
+      << markdown;
+  format.status_column = true;  // the paper's rows leave the status empty
+  const std::string with_status = report_markdown(load_run_summaries(store, {}), format);
+  EXPECT_NE(with_status.find("| | paper: pc | | | 24 of 25 | 100% | 0.80 / 1.45 | 1.69 / 3.19 |"),
+            std::string::npos)
+      << with_status;
+}
+
+// The paper's numbers are of the corridor: a selection of another task's runs gets none.
+TEST(PaperRows, AppendsNoPaperRowsToRunsOfAnotherTask) {
+  TempDir dir;
+  ResultStore store(dir.file("r.sqlite"));
+  add_run(store, "rope_color", "environment: {type: rope_knot}\nseed: 0\n", 1.0, 0.2);
+  ReportFormat format;
+  const auto runs = load_run_summaries(store, {});
+  EXPECT_FALSE(reference_rows_apply(runs, tables()));
+  if (reference_rows_apply(runs, tables())) format.reference_rows = reference_rows(tables());
+  const std::string markdown = report_markdown(runs, format);
+  EXPECT_EQ(markdown.find("paper:"), std::string::npos) << markdown;
+  EXPECT_NE(markdown.find("| rope_color |"), std::string::npos) << markdown;
+}
+
+}  // namespace
+}  // namespace corrmp

@@ -1,0 +1,52 @@
+// Test helper: run summaries and small run directories (a corridor-like
+// trajectories.csv, the trials' decisions) for the reproduction figures' tests.
+#pragma once
+
+#include <fmt/format.h>
+
+#include <map>
+#include <optional>
+#include <string>
+
+#include "config/test_files.hpp"
+#include "report/reproduction_figures.hpp"
+
+namespace corrmp::testing {
+
+inline RunSummary run_of(int64_t id, const std::string& experiment,
+                         std::map<std::string, std::string> axes, std::optional<double> success) {
+  RunSummary run;
+  run.id = id;
+  run.experiment = experiment;
+  run.status = "completed";
+  run.axes = std::move(axes);
+  if (success) run.metrics["task_success_rate"] = *success;
+  return run;
+}
+
+// A corridor run directory: trajectories.csv with trials 0 (push), 1 (pull)
+// and 2 (push), segments pre, cor and post of 4 steps each.
+inline void write_trajectories(const TempDir& dir, const std::string& run) {
+  std::string csv = "trial,segment,step,x,y,z,expert_x,expert_y,expert_z\n";
+  for (int trial = 0; trial < 3; ++trial) {
+    for (const char* segment : {"cor", "post", "pre"}) {  // as the evaluation writes them
+      for (int step = 0; step < 4; ++step) {
+        const double x = 0.4 + 0.01 * step, y = -0.1 + 0.02 * step + 0.01 * trial;
+        csv += fmt::format("{},{},{},{},{},0.03,{},{},0.03\n", trial, segment, step, x, y,
+                           x + 0.002, y - 0.001);
+      }
+    }
+  }
+  dir.write(run + "/trajectories.csv", csv);
+}
+
+// The run files of the directory `run` with the trials above.
+inline RunFiles files_in(const TempDir& dir, const std::string& run) {
+  RunFiles files;
+  files.recorded = files.directory = dir.file(run);
+  files.trials = {
+      {0, "push", "push", true}, {1, "pull", "push", false}, {2, "push", "push", false}};
+  return files;
+}
+
+}  // namespace corrmp::testing
