@@ -4,6 +4,7 @@
 #include <fmt/format.h>
 #include <spdlog/spdlog.h>
 
+#include <algorithm>
 #include <chrono>
 #include <cmath>
 #include <memory>
@@ -19,6 +20,21 @@
 namespace corrmp {
 
 namespace {
+
+// The Euclidean distance between the rows of a prediction and its trajectory, averaged over time.
+double mean_row_distance(const Eigen::MatrixXd& a, const Eigen::MatrixXd& b) {
+  return (a - b).rowwise().norm().mean();
+}
+
+// The mean and max of the trajectories' errors, summed in trajectory order.
+PredictionError summarise(const std::vector<double>& errors) {
+  double sum = 0.0, max = 0.0;
+  for (double error : errors) {
+    sum += error;
+    max = std::max(max, error);
+  }
+  return {errors.empty() ? 0.0 : sum / static_cast<double>(errors.size()), max};
+}
 
 std::vector<NormalisedTrajectory> normalise(const CnmpModel& model,
                                             const std::vector<CnmpTrajectory>& data) {
@@ -79,7 +95,7 @@ Eigen::MatrixXd stack_rows(const std::vector<CnmpTrajectory>& data, bool context
 // two workers, the second predicting with `copy` (made on first use, then given the model's
 // current weights). Each error is computed from the same weights by the same code whichever
 // worker has it, and they are added up in trajectory order, so the result is prediction_error's.
-TrajectoryError validation_error(CnmpModel& model, std::unique_ptr<CnmpModel>& copy,
+PredictionError validation_error(CnmpModel& model, std::unique_ptr<CnmpModel>& copy,
                                  const std::vector<CnmpTrajectory>& data, int workers) {
   if (workers < 2) return prediction_error(model, data);
   if (!copy) copy = std::make_unique<CnmpModel>(model);
@@ -93,9 +109,7 @@ TrajectoryError validation_error(CnmpModel& model, std::unique_ptr<CnmpModel>& c
         predictor.predict(first_observation(t.x, t.y), t.context, t.x);
     errors[static_cast<size_t>(index)] = mean_row_distance(prediction.mean, t.y);
   });
-  TrajectoryErrorAccumulator accumulator;
-  for (double error : errors) accumulator.add(error);
-  return accumulator.result();
+  return summarise(errors);
 }
 
 // The size from which a network's updates run on two workers (see train_cnmp).
@@ -110,23 +124,19 @@ double scheduled_learning_rate(const CnmpTrainingParams& params, int64_t update)
                                           (1.0 + std::cos(M_PI * progress)) / 2.0;
 }
 
-double mean_row_distance(const Eigen::MatrixXd& a, const Eigen::MatrixXd& b) {
-  return (a - b).rowwise().norm().mean();
-}
-
 Eigen::MatrixXd first_observation(const Eigen::MatrixXd& x, const Eigen::MatrixXd& y) {
   Eigen::MatrixXd first(1, x.cols() + y.cols());
   first << x.row(0), y.row(0);
   return first;
 }
 
-TrajectoryError prediction_error(CnmpModel& model, const std::vector<CnmpTrajectory>& data) {
-  TrajectoryErrorAccumulator errors;
+PredictionError prediction_error(CnmpModel& model, const std::vector<CnmpTrajectory>& data) {
+  std::vector<double> errors;
   for (const auto& t : data) {
     const CnmpPrediction prediction = model.predict(first_observation(t.x, t.y), t.context, t.x);
-    errors.add(mean_row_distance(prediction.mean, t.y));
+    errors.push_back(mean_row_distance(prediction.mean, t.y));
   }
-  return errors.result();
+  return summarise(errors);
 }
 
 TrainingReport train_cnmp(CnmpModel& model, const std::vector<CnmpTrajectory>& train,
@@ -183,7 +193,7 @@ TrainingReport train_cnmp(CnmpModel& model, const std::vector<CnmpTrajectory>& t
       status = fmt::format("loss {:.3f}", report.final_loss);
       TrainingCurvePoint point{update, report.final_loss, std::nan(""), std::nan("")};
       if (!validation.empty()) {
-        const TrajectoryError error =
+        const PredictionError error =
             validation_error(model, validator, validation, own ? updater.workers() : 1);
         point.validation_mean = error.mean;
         point.validation_max = error.max;

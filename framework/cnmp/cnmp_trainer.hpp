@@ -54,25 +54,12 @@ struct CnmpTrajectory {
   Eigen::VectorXd context;
 };
 
-struct TrajectoryError {
-  double mean = 0.0;  // over trajectories of the time-averaged Euclidean error
-  double max = 0.0;   // the largest time-averaged error of one trajectory
-};
-
-// Collects the time-averaged errors of trajectories into their mean and max.
-class TrajectoryErrorAccumulator {
- public:
-  void add(double error) {
-    sum_ += error;
-    max_ = std::max(max_, error);
-    ++count_;
-  }
-  int count() const { return count_; }
-  TrajectoryError result() const { return {count_ > 0 ? sum_ / count_ : 0.0, max_}; }
-
- private:
-  double sum_ = 0.0, max_ = 0.0;
-  int count_ = 0;
+// The error of a CNMP's predictions on trajectories: the Euclidean distance
+// between predicted and true rows averaged over time, then its mean and max
+// over the trajectories (data units).
+struct PredictionError {
+  double mean = 0.0;
+  double max = 0.0;
 };
 
 // The observation a prediction is conditioned on: the trajectory's first point
@@ -93,7 +80,7 @@ struct TrainingReport {
   int64_t updates = 0;
   int64_t best_update = 0;
   double final_loss = 0.0;  // mean loss over the last validation interval
-  TrajectoryError best_validation;
+  PredictionError best_validation;
   double seconds = 0.0;
   int64_t team_updates = 0;  // updates run on two threads (cnmp/parallel_cnmp_step.hpp)
   std::vector<TrainingCurvePoint> curve;
@@ -101,14 +88,11 @@ struct TrainingReport {
 
 // Error of predictions conditioned on each trajectory's first point and context,
 // queried at all its time steps, against the trajectory (data units).
-TrajectoryError prediction_error(CnmpModel& model, const std::vector<CnmpTrajectory>& data);
+PredictionError prediction_error(CnmpModel& model, const std::vector<CnmpTrajectory>& data);
 
 // The learning rate of update `update` (1-based): constant, or the cosine
 // schedule when final_learning_rate > 0.
 double scheduled_learning_rate(const CnmpTrainingParams& params, int64_t update);
-
-// Mean Euclidean distance between rows of two equally shaped matrices.
-double mean_row_distance(const Eigen::MatrixXd& a, const Eigen::MatrixXd& b);
 
 // Fits the normalisers to `train` and trains the model. Without validation
 // data the final weights are kept. `label` names the progress bar.

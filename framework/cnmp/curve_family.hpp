@@ -5,7 +5,7 @@
 #pragma once
 
 #include "core/config/field_rule.hpp"
-#include "data/demonstrations.hpp"
+#include "envs/demonstration_source.hpp"
 
 namespace corrmp {
 

@@ -3,7 +3,7 @@
 #pragma once
 
 #include "core/registry.hpp"
-#include "data/demonstrations.hpp"
+#include "envs/demonstration_source.hpp"
 
 namespace corrmp {
 

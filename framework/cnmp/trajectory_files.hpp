@@ -10,7 +10,7 @@
 
 #include "cnmp/trajectory_dataset.hpp"
 #include "core/config/field_rule.hpp"
-#include "data/demonstrations.hpp"
+#include "envs/demonstration_source.hpp"
 
 namespace corrmp {
 

@@ -15,11 +15,11 @@
 #include <string>
 #include <vector>
 
-#include "core/build_context.hpp"
 #include "core/config/config_reader.hpp"
 #include "core/config/did_you_mean.hpp"
 #include "core/config/field_docs.hpp"
 #include "core/parameter_error.hpp"
+#include "core/seeds.hpp"
 
 namespace corrmp {
 
@@ -30,16 +30,16 @@ class Registry {
     std::string name;
     std::string description;
     std::vector<FieldDoc> parameters;
-    std::function<std::unique_ptr<Base>(ConfigNode&, const std::string&, const BuildContext&)>
-        build;
+    std::function<std::unique_ptr<Base>(ConfigNode&, const std::string&, const SeedTree&)> build;
   };
 
   // `kind` names what this registry holds in messages ("environment").
   explicit Registry(std::string kind) : kind_(std::move(kind)) {}
 
-  // Registers `name`, built by make(const Params&, const BuildContext&) (a
+  // Registers `name`, built by make(const Params&, const SeedTree& seeds) (a
   // std::unique_ptr to a Base) from a Params struct read strictly from the
-  // component's config section.
+  // component's config section; `seeds` are the run's seed streams, from
+  // which a component takes its own by name.
   template <class Params, class Make>
   void add(const std::string& name, const std::string& description, Make make) {
     if (find(name) != nullptr) {
@@ -47,14 +47,14 @@ class Registry {
     }
     entries_.push_back(
         Entry{name, description, FieldDocs::of<Params>(),
-              [make](ConfigNode& node, const std::string& path, const BuildContext& context) {
+              [make](ConfigNode& node, const std::string& path, const SeedTree& seeds) {
                 Params params;
                 ConfigReader reader(node, path);
                 reader.declare("type");
                 params.describe(reader);
                 reader.finish();
                 try {
-                  return std::unique_ptr<Base>(make(params, context));
+                  return std::unique_ptr<Base>(make(params, seeds));
                 } catch (const ParameterError& e) {
                   throw ConfigError(stated_location(node, e.key(), node.where()),
                                     path + "." + e.key(), e.what());
@@ -67,7 +67,7 @@ class Registry {
 
   // Builds the component a config section names; its parameters are validated
   // (and their defaults written into the section) on the way.
-  std::unique_ptr<Base> create(const ComponentSpec& spec, const BuildContext& context) const {
+  std::unique_ptr<Base> create(const ComponentSpec& spec, const SeedTree& seeds) const {
     const Entry* entry = find(spec.type);
     if (entry == nullptr) {
       const ConfigNode* type = spec.node->find("type");
@@ -75,7 +75,7 @@ class Registry {
                         fmt::format("unknown {} '{}'{}; valid: {}", kind_, spec.type,
                                     did_you_mean(spec.type, names()), valid_names()));
     }
-    return entry->build(*spec.node, spec.path, context);
+    return entry->build(*spec.node, spec.path, seeds);
   }
 
   const Entry* find(const std::string& name) const {

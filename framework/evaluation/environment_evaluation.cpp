@@ -16,6 +16,7 @@
 #include "core/progress.hpp"
 #include "core/thread_budget.hpp"
 #include "evaluation/evaluation_tables.hpp"
+#include "evaluation/trajectory_error.hpp"
 
 namespace corrmp {
 

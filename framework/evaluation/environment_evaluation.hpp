@@ -19,8 +19,8 @@
 #include <vector>
 
 #include "context/context_extractor.hpp"
-#include "data/demonstrations.hpp"
 #include "data/evaluated_trial.hpp"
+#include "envs/demonstration_source.hpp"
 #include "envs/environment.hpp"
 #include "policies/policy.hpp"
 #include "store/result_store.hpp"

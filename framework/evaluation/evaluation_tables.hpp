@@ -10,9 +10,9 @@
 #include <string>
 #include <vector>
 
-#include "cnmp/cnmp_trainer.hpp"
 #include "data/evaluated_trial.hpp"
 #include "envs/environment.hpp"
+#include "evaluation/trajectory_error.hpp"
 #include "store/result_store.hpp"
 
 namespace corrmp {

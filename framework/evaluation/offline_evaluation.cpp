@@ -6,6 +6,8 @@
 
 #include <filesystem>
 
+#include "cnmp/cnmp_trainer.hpp"
+
 namespace corrmp {
 
 namespace {

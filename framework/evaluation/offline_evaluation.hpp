@@ -8,6 +8,7 @@
 #include <vector>
 
 #include "data/demonstrations.hpp"
+#include "evaluation/trajectory_error.hpp"
 #include "policies/policy.hpp"
 #include "store/result_store.hpp"
 

@@ -33,15 +33,14 @@ Experiment load_experiment(const std::string& config_path,
   ConfigReader::read(*experiment.root, "", experiment.config);
   check_name(*experiment.root, experiment.config.experiment.name);
 
-  experiment.context.seeds = SeedTree(experiment.config.seed);
+  experiment.seeds = SeedTree(experiment.config.seed);
   const ExperimentConfig& config = experiment.config;
   if (config.environment) {
-    experiment.environment =
-        registries.environments.create(*config.environment, experiment.context);
+    experiment.environment = registries.environments.create(*config.environment, experiment.seeds);
   }
   if (config.demonstrations) {
     experiment.demonstrations =
-        registries.demonstrations.create(*config.demonstrations, experiment.context);
+        registries.demonstrations.create(*config.demonstrations, experiment.seeds);
     if (experiment.demonstrations->needs_environment() && !experiment.environment) {
       const ConfigNode* type = config.demonstrations->node->find("type");
       throw ConfigError(type->where(), "demonstrations.type",
@@ -51,10 +50,10 @@ Experiment load_experiment(const std::string& config_path,
     }
   }
   if (config.context) {
-    experiment.context_extractor = registries.contexts.create(*config.context, experiment.context);
+    experiment.context_extractor = registries.contexts.create(*config.context, experiment.seeds);
   }
   if (config.policy) {
-    experiment.policy = registries.policies.create(*config.policy, experiment.context);
+    experiment.policy = registries.policies.create(*config.policy, experiment.seeds);
   }
 
   check_components(experiment);

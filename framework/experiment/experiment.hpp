@@ -8,8 +8,8 @@
 #include <string>
 #include <vector>
 
-#include "core/build_context.hpp"
 #include "core/config/config_node.hpp"
+#include "core/seeds.hpp"
 #include "experiment/experiment_config.hpp"
 #include "experiment/registries.hpp"
 
@@ -19,7 +19,7 @@ struct Experiment {
   std::string config_path;
   std::unique_ptr<ConfigNode> root;  // owns the nodes ComponentSpecs point into
   ExperimentConfig config;
-  BuildContext context;
+  SeedTree seeds{0};  // the run's seed streams, from config.seed
   std::unique_ptr<Environment> environment;
   std::unique_ptr<DemonstrationSource> demonstrations;
   std::unique_ptr<ContextExtractor> context_extractor;

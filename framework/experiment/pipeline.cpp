@@ -16,14 +16,14 @@
 #include "core/interrupt.hpp"
 #include "core/json_writer.hpp"
 #include "core/logging.hpp"
-#include "experiment/demonstration_cache.hpp"
 #include "evaluation/environment_evaluation.hpp"
-#include "experiment/interrupted_runs.hpp"
 #include "evaluation/offline_evaluation.hpp"
+#include "evaluation/trajectory_outputs.hpp"
+#include "experiment/demonstration_cache.hpp"
+#include "experiment/interrupted_runs.hpp"
 #include "experiment/policy_fitting.hpp"
 #include "experiment/provenance.hpp"
 #include "experiment/training_curves.hpp"
-#include "evaluation/trajectory_outputs.hpp"
 #include "store/result_store.hpp"
 
 namespace corrmp {
@@ -110,7 +110,7 @@ void run_stages(Experiment& experiment, const fs::path& dir, const RunOptions& o
     spdlog::warn("no demonstrations section: nothing to collect, train or evaluate");
     return;
   }
-  Rng collect_rng = experiment.context.seeds.stream("demonstrations");
+  Rng collect_rng = experiment.seeds.stream("demonstrations");
   spdlog::info("collecting demonstrations ({})", experiment.config.demonstrations->type);
   const std::string key = demonstrations_key(experiment);
   DemonstrationSplit demos =
@@ -130,10 +130,10 @@ void run_stages(Experiment& experiment, const fs::path& dir, const RunOptions& o
   if (experiment.context_extractor) {
     spdlog::info("fitting the context extractor ({})", experiment.config.context->type);
   }
-  const auto summaries = fit_extractor_and_policy(
-      *experiment.policy, experiment.context_extractor.get(), demos,
-      {experiment.context.seeds.stream("policy.training"),
-       experiment.context.seeds.stream("context"), extractor_cache, dir.string()});
+  const auto summaries =
+      fit_extractor_and_policy(*experiment.policy, experiment.context_extractor.get(), demos,
+                               {experiment.seeds.stream("policy.training"),
+                                experiment.seeds.stream("context"), extractor_cache, dir.string()});
   for (const auto& summary : summaries) {
     const std::string team =
         summary.report.team_updates > 0

@@ -6,7 +6,7 @@
 
 #include "context/context_extractor.hpp"
 #include "core/registry.hpp"
-#include "data/demonstrations.hpp"
+#include "envs/demonstration_source.hpp"
 #include "envs/environment.hpp"
 #include "policies/policy.hpp"
 

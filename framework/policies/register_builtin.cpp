@@ -11,14 +11,14 @@ namespace corrmp {
 void register_builtin_policies(Registry<Policy>& policies) {
   policies.add<SegmentedCnmpParams>(
       "segmented_cnmp", "one CNMP per segment, each conditioned on its start and context (paper)",
-      [](const SegmentedCnmpParams& p, const BuildContext& context) {
-        return std::make_unique<SegmentedCnmp>(p, context.seeds.seed_for("policy.init"));
+      [](const SegmentedCnmpParams& p, const SeedTree& seeds) {
+        return std::make_unique<SegmentedCnmp>(p, seeds.seed_for("policy.init"));
       });
   policies.add<MonolithicCnmpParams>(
       "monolithic_cnmp",
       "baseline: one CNMP for the whole trajectory, parameters matched to the segment networks",
-      [](const MonolithicCnmpParams& p, const BuildContext& context) {
-        return std::make_unique<MonolithicCnmp>(p, context.seeds.seed_for("policy.init"));
+      [](const MonolithicCnmpParams& p, const SeedTree& seeds) {
+        return std::make_unique<MonolithicCnmp>(p, seeds.seed_for("policy.init"));
       });
 }
 

@@ -54,11 +54,11 @@ CnmpTrainingParams quick_training() {
 TEST(CnmpTrainer, LearnsACurveFamilyAndGeneralisesToUnseenContexts) {
   const Fixture data;
   CnmpModel model(curve_architecture(), 1);
-  const TrajectoryError untrained = prediction_error(model, data.validation);
+  const PredictionError untrained = prediction_error(model, data.validation);
   Rng rng(4);
   const TrainingReport report =
       train_cnmp(model, data.train, data.validation, quick_training(), rng, "curves");
-  const TrajectoryError trained = prediction_error(model, data.validation);
+  const PredictionError trained = prediction_error(model, data.validation);
   // The curves span about 1.5 in y; unseen contexts must be predicted closely.
   EXPECT_LT(trained.mean, 0.03) << "untrained " << untrained.mean;
   EXPECT_LT(trained.max, 0.08);

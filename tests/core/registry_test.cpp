@@ -33,13 +33,12 @@ struct Square : Shape {
 
 Registry<Shape> shapes() {
   Registry<Shape> registry("shape");
-  registry.add<SquareParams>("square", "a square", [](const SquareParams& p, const BuildContext&) {
+  registry.add<SquareParams>("square", "a square", [](const SquareParams& p, const SeedTree&) {
     return new Square(p.side);
   });
-  registry.add<SquareParams>("big_square", "a square twice as wide",
-                             [](const SquareParams& p, const BuildContext&) {
-                               return std::make_unique<Square>(2 * p.side);
-                             });
+  registry.add<SquareParams>(
+      "big_square", "a square twice as wide",
+      [](const SquareParams& p, const SeedTree&) { return std::make_unique<Square>(2 * p.side); });
   return registry;
 }
 
@@ -54,7 +53,7 @@ struct Top {
 std::unique_ptr<Shape> build(ConfigNode& root) {
   Top top;
   ConfigReader::read(root, "", top);
-  return shapes().create(top.shape, BuildContext{});
+  return shapes().create(top.shape, SeedTree{0});
 }
 
 TEST(Registry, BuildsTheNamedComponentFromItsParameters) {
@@ -96,7 +95,7 @@ TEST(Registry, DuplicateNamesAreRejectedAtRegistration) {
   Registry<Shape> registry = shapes();
   EXPECT_THROW(registry.add<SquareParams>(
                    "square", "again",
-                   [](const SquareParams& p, const BuildContext&) { return new Square(p.side); }),
+                   [](const SquareParams& p, const SeedTree&) { return new Square(p.side); }),
                std::logic_error);
 }
 

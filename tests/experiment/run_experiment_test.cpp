@@ -1,12 +1,15 @@
 // End-to-end tests of the run_experiment command: exit codes, one-line config
 // errors with nothing written to the database, run directories, determinism.
+#include <fmt/format.h>
+#include <fmt/ranges.h>
 #include <gtest/gtest.h>
 
 #include <filesystem>
 #include <fstream>
 
-#include "support/report_tool.hpp"
+#include "experiment/registries.hpp"
 #include "store/result_store.hpp"
+#include "support/report_tool.hpp"
 
 namespace corrmp {
 namespace {
@@ -19,6 +22,18 @@ std::string read_file(const std::string& path) { return testing::read(path); }
 
 Outcome run(const TempDir& dir, const std::string& args) {
   return testing::run_experiment_tool(dir, args);
+}
+
+// Every registered demonstration source, as a message lists them: the tasks' experts, which
+// come and go with the task folders, then curve_family and trajectory_files.
+std::string registered_sources() {
+  return fmt::format("{}", fmt::join(builtin_registries().demonstrations.names(), ", "));
+}
+
+TEST(RunExperiment, TheListedDemonstrationSourcesAreTheBuiltInOnesInRegistrationOrder) {
+  const std::string sources = registered_sources();
+  EXPECT_NE(sources.find("corridor_expert, rope_expert"), std::string::npos) << sources;
+  EXPECT_EQ(sources.substr(sources.size() - 30), "curve_family, trajectory_files") << sources;
 }
 
 const std::string kGood =
@@ -38,8 +53,8 @@ TEST(RunExperiment, MalformedConfigsGiveOneLineExitTwoAndNoDatabaseWrites) {
        "bad.yaml:2:45: demonstrations.train: value 0 is out of range: must be in [1, 1000000]"},
       {"experiment: {name: a}\ndemonstrations: {type: curve_famly}\n",
        "bad.yaml:2:24: demonstrations.type: unknown demonstration source 'curve_famly' (did you "
-       "mean 'curve_family'?); valid: corridor_expert, rope_expert, curve_family, "
-       "trajectory_files"},
+       "mean 'curve_family'?); valid: " +
+           registered_sources()},
       {"experiment: {name: 'a/b'}\n", "bad.yaml:1:20: experiment.name: 'a/b' is not a valid name"},
       {"experiment: {name: a\n", "bad.yaml:2:1: YAML syntax error"},
   };

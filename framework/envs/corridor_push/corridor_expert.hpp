@@ -19,9 +19,9 @@
 #include <vector>
 
 #include "core/config/field_rule.hpp"
-#include "data/demonstrations.hpp"
-#include "data/expert_memory.hpp"
 #include "envs/corridor_push/corridor_push.hpp"
+#include "envs/demonstration_source.hpp"
+#include "envs/expert_memory.hpp"
 
 namespace corrmp {
 

@@ -12,12 +12,12 @@ void register_corridor_push(Registry<Environment>& environments,
                             Registry<DemonstrationSource>& demonstrations) {
   environments.add<CorridorPushParams>(
       "corridor_push", "push an object through a corridor perturbed along x (Bullet, paper IV-A)",
-      [](const CorridorPushParams& p, const BuildContext&) {
+      [](const CorridorPushParams& p, const SeedTree&) {
         return std::make_unique<CorridorPush>(p);
       });
   demonstrations.add<CorridorExpertParams>(
       "corridor_expert", "emulated human teacher of corridor_push: push, pull or no correction",
-      [](const CorridorExpertParams& p, const BuildContext&) {
+      [](const CorridorExpertParams& p, const SeedTree&) {
         return std::make_unique<CorridorExpert>(p);
       });
 }

@@ -2,7 +2,7 @@
 #pragma once
 
 #include "core/registry.hpp"
-#include "data/demonstrations.hpp"
+#include "envs/demonstration_source.hpp"
 #include "envs/environment.hpp"
 
 namespace corrmp {

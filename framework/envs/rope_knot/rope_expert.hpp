@@ -15,8 +15,8 @@
 #include <vector>
 
 #include "core/config/field_rule.hpp"
-#include "data/demonstrations.hpp"
-#include "data/expert_memory.hpp"
+#include "envs/demonstration_source.hpp"
+#include "envs/expert_memory.hpp"
 #include "envs/rope_knot/rope_knot.hpp"
 
 namespace corrmp {

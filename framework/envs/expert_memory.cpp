@@ -1,5 +1,5 @@
 // An expert's demonstrations in memory (expert_memory.hpp).
-#include "data/expert_memory.hpp"
+#include "envs/expert_memory.hpp"
 
 #include <fmt/format.h>
 

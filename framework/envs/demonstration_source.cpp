@@ -1,5 +1,5 @@
 // Demonstration sources: the default for sources that are not experts.
-#include "data/demonstrations.hpp"
+#include "envs/demonstration_source.hpp"
 
 #include <stdexcept>
 
