@@ -100,11 +100,12 @@ std::string no_run_matches(corrmp::ResultStore& store, corrmp::ReportQuery query
   int total = 0;
   if (query.completed_only) {
     query.completed_only = false;
-    std::map<std::string, int> by_status;
+    std::map<corrmp::RunStatus, int> by_status;
     for (const auto& run : corrmp::load_run_summaries(store, query)) ++by_status[run.status];
-    for (const char* status : {"failed", "interrupted", "running"}) {
+    for (const auto status :
+         {corrmp::RunStatus::failed, corrmp::RunStatus::interrupted, corrmp::RunStatus::running}) {
       if (by_status[status] == 0) continue;
-      counts.push_back(std::to_string(by_status[status]) + " " + status);
+      counts.push_back(std::to_string(by_status[status]) + " " + corrmp::to_string(status));
       total += by_status[status];
     }
   }

@@ -23,7 +23,7 @@
 #include "data/evaluated_trial.hpp"
 #include "envs/environment.hpp"
 #include "policies/policy.hpp"
-#include "store/result_store.hpp"
+#include "store/records.hpp"
 
 namespace corrmp {
 

@@ -9,7 +9,6 @@
 
 #include "data/demonstrations.hpp"
 #include "policies/policy.hpp"
-#include "store/result_store.hpp"
 
 namespace corrmp {
 

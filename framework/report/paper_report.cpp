@@ -82,7 +82,7 @@ std::string interval_text(const MeanInterval& m, double low, double high, bool p
 }
 
 // A cell of a metric across runs; its interval is clipped to the values the
-// metric can take (metric_ranges.hpp: errors at 0, rates to [0, 1]). Without
+// metric can take (its declared range: errors at 0, rates to [0, 1]). Without
 // a paper value the verdict says so.
 Cell metric_cell(const std::string& table, const std::string& row, const std::string& group,
                  const std::string& metric, const std::vector<const RunSummary*>& runs,
@@ -90,7 +90,7 @@ Cell metric_cell(const std::string& table, const std::string& row, const std::st
                  bool higher_is_better) {
   const MeanInterval m = mean_interval(samples(runs, metric));
   Cell cell{table, row, group, metric, m.count, m.mean, m.low, m.high, "", "", ""};
-  const IntervalBounds clipped = metric_interval(metric, m);
+  const IntervalBounds clipped = metric_interval(declared_metric(runs, metric), m);
   cell.low = clipped.low;
   cell.high = clipped.high;
   cell.ours = interval_text(m, cell.low, cell.high, percent, runs.size());

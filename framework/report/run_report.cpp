@@ -58,14 +58,16 @@ std::string varies_text(const RunSummary& run,
 // The paper's rows (assets/paper/tables.yaml), as report cells.
 struct PaperRow {
   std::string label, success, decision;
-  std::map<std::string, std::string> errors;  // by the error column's mean metric
+  std::map<std::string, std::string> errors;  // by the paper's error key (<segment>_mp)
 };
 
 std::vector<PaperRow> paper_rows(const std::string& tables_path) {
   const YAML::Node tables = YAML::LoadFile(tables_path);
   std::vector<PaperRow> rows;
-  for (const char* key : {"pc", "ae", "mono"}) {
-    const YAML::Node t1 = tables["table_1"][key];
+  for (const auto& group : tables["table_1"]) {  // the paper's columns, in its order
+    const std::string key = group.first.as<std::string>();
+    if (key == "expected") continue;
+    const YAML::Node t1 = group.second;
     const YAML::Node t2 = tables["table_2"][key];
     // Decision match per expected correction, weighted by how often each was
     // expected in the paper's draw.
@@ -80,13 +82,42 @@ std::vector<PaperRow> paper_rows(const std::string& tables_path) {
                  fmt::format("{} of {}", t1["task_success"].as<int>(), expected),
                  fmt::format("{:.0f}%", 100 * matched / expected),
                  {}};
-    for (const auto& entry : t2) {  // cor_mp: [mean, max] in cm
-      row.errors[entry.first.as<std::string>() + "_error_mean_cm"] = fmt::format(
+    for (const auto& entry : t2) {  // cor_mp: [mean, max] in the task's error unit
+      row.errors[entry.first.as<std::string>()] = fmt::format(
           "{:.2f} / {:.2f}", entry.second[0].as<double>(), entry.second[1].as<double>());
     }
     rows.push_back(row);
   }
   return rows;
+}
+
+// The unit the runs' errors are in: the one their task declared, or for runs recorded before
+// tasks were stored, the one their error metrics declared.
+std::string error_unit(const std::vector<RunSummary>& runs) {
+  for (const auto& run : runs) {
+    if (run.task && !run.task->error_unit.empty()) return run.task->error_unit;
+  }
+  for (const auto& run : runs) {
+    for (const auto& error : error_metrics({run})) {
+      const std::string& unit = run.declarations.at(error.mean).unit;
+      if (!unit.empty()) return unit;
+    }
+  }
+  return "";
+}
+
+// The mean metric of the error column of the paper's error `key` (<segment>_mp, the stem of the
+// task's <segment>_mp_error_mean_<unit>) among `errors`, the column added when no run recorded it.
+std::string paper_error_column(std::vector<ErrorMetric>& errors, const std::string& key,
+                               const std::string& unit) {
+  const std::string mean = key + "_error_mean_" + unit;
+  const auto known = std::find_if(errors.begin(), errors.end(),
+                                  [&](const ErrorMetric& column) { return column.mean == mean; });
+  if (known == errors.end()) {
+    errors.push_back({mean, key + "_error_max_" + unit,
+                      fmt::format("paper's {} error mean / max ({})", key, unit)});
+  }
+  return mean;
 }
 
 }  // namespace
@@ -111,14 +142,14 @@ std::string report_markdown(const std::vector<RunSummary>& runs, const ReportFor
   if (!format.paper_tables.empty() && paper_rows_apply(runs, format.paper_tables))
     paper = paper_rows(format.paper_tables);
   std::vector<ErrorMetric> errors = error_metrics(runs);
+  const std::string unit = paper.empty() ? "" : error_unit(runs);
+  std::vector<std::map<std::string, std::string>> paper_errors;  // by error column's mean
   for (const auto& row : paper) {  // the paper's errors get their columns too
-    for (const auto& [mean, text] : row.errors) {
-      const bool known = std::any_of(errors.begin(), errors.end(),
-                                     // A structured binding is captured through an
-                                     // init-capture: C++17 (clang) allows no other way.
-                                     [&key = mean](const ErrorMetric& c) { return c.mean == key; });
-      if (const auto error = error_metric(mean); !known && error) errors.push_back(*error);
+    std::map<std::string, std::string> cells;
+    for (const auto& [key, text] : row.errors) {
+      cells[paper_error_column(errors, key, unit)] = text;
     }
+    paper_errors.push_back(cells);
   }
   std::string out = "| run | experiment |";
   std::string rule = "|---|---|";
@@ -139,7 +170,7 @@ std::string report_markdown(const std::vector<RunSummary>& runs, const ReportFor
   out += "\n" + rule + "\n";
   for (const auto& run : runs) {
     out += fmt::format("| {} | {} |", run.id, markdown_cell(run.experiment));
-    if (format.status_column) out += " " + markdown_cell(run.status) + " |";
+    if (format.status_column) out += " " + markdown_cell(to_string(run.status)) + " |";
     out += fmt::format(" {} | {} | {} |", markdown_cell(varies_text(run, varying)),
                        success_text(run), percent_text(metric(run, "decision_match_rate")));
     for (const auto& column : errors) out += " " + pair_text(run, column) + " |";
@@ -148,17 +179,15 @@ std::string report_markdown(const std::vector<RunSummary>& runs, const ReportFor
     }
     out += "\n";
   }
-  {
-    for (const auto& row : paper) {
-      out += fmt::format("| | {} |{} | {} | {} |", row.label, format.status_column ? " |" : "",
-                         row.success, row.decision);
-      for (const auto& column : errors) {
-        const auto cell = row.errors.find(column.mean);
-        out += " " + (cell == row.errors.end() ? std::string() : cell->second) + " |";
-      }
-      for (size_t i = 0; i < format.extra_metrics.size(); ++i) out += " |";
-      out += "\n";
+  for (size_t r = 0; r < paper.size(); ++r) {
+    out += fmt::format("| | {} |{} | {} | {} |", paper[r].label, format.status_column ? " |" : "",
+                       paper[r].success, paper[r].decision);
+    for (const auto& column : errors) {
+      const auto cell = paper_errors[r].find(column.mean);
+      out += " " + (cell == paper_errors[r].end() ? std::string() : cell->second) + " |";
     }
+    for (size_t i = 0; i < format.extra_metrics.size(); ++i) out += " |";
+    out += "\n";
   }
   return out;
 }
@@ -175,7 +204,7 @@ std::string report_csv(const std::vector<RunSummary>& runs, const ReportFormat& 
   for (const auto& c : columns) out += "," + csv_cell(c);
   out += "\n";
   for (const auto& run : runs) {
-    out += fmt::format("{},{},{},{},{}", run.id, csv_cell(run.experiment), run.status,
+    out += fmt::format("{},{},{},{},{}", run.id, csv_cell(run.experiment), to_string(run.status),
                        csv_cell(varies_text(run, varying)), run.trials);
     for (const auto& c : columns) {
       const double* value = metric(run, c);

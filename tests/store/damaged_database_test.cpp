@@ -11,6 +11,7 @@
 #include "config/test_files.hpp"
 #include "log_capture.hpp"
 #include "store/result_store.hpp"
+#include "support/store_sql.hpp"
 
 namespace corrmp {
 namespace {
@@ -54,7 +55,7 @@ TEST(DamagedDatabase, AZeroByteFileBecomesANewDatabaseWithOneNotice) {
   testing::LogCapture log;
   {
     ResultStore store(path);
-    EXPECT_EQ(store.query_int("PRAGMA user_version"), ResultStore::kSchemaVersion);
+    EXPECT_EQ(testing::query_int(store, "PRAGMA user_version"), ResultStore::kSchemaVersion);
     RunRecord run;
     run.experiment = "e";
     EXPECT_GT(store.begin_run(run), 0);
@@ -113,7 +114,7 @@ TEST(DamagedDatabase, EveryStatementErrorNamesTheDatabase) {
   const std::string path = dir.file("r.sqlite");
   ResultStore store(path);
   try {
-    store.query_text("SELECT nothing FROM nowhere");
+    testing::query_text(store, "SELECT nothing FROM nowhere");
     FAIL() << "no error";
   } catch (const StoreError& e) {
     EXPECT_EQ(std::string(e.what()).rfind(fs::canonical(path).string() + ": ", 0), 0u) << e.what();
