@@ -164,6 +164,8 @@ std::string utc_timestamp() {
   return buffer;
 }
 
+std::string sqlite_library_version() { return sqlite3_libversion(); }
+
 std::string host_name() {
   char buffer[256] = {};
   if (gethostname(buffer, sizeof buffer - 1) != 0) return "unknown";

@@ -86,5 +86,6 @@ class ResultStore {
 
 std::string utc_timestamp();  // ISO 8601, e.g. 2026-11-22T02:24:37Z
 std::string host_name();
+std::string sqlite_library_version();  // of the SQLite the store runs on, e.g. "3.40.1"
 
 }  // namespace corrmp
