@@ -1,11 +1,12 @@
 // report [--db PATH] [--experiment NAME ...] [--run ID ...] [--sweep ID ...]
-//        [--last N] [--csv] [--metric NAME ...] [--paper] [--all]
+//        [--last N] [--csv] [--metric NAME ...] [--paper] [--all] [--decisions]
 // report --compare [--by KEY ...] [--baseline GROUP] [--out DIR] ...
 // report --reproduction --sweep ID --out DIR
 // report --plot-success KEY [--sweep ID ...] --out DIR
 // Prints one row per recorded run (task success, decision match, cor-MP and
 // post-MP errors of the paper's Tables I and II) with the settings that vary
-// between runs of the same experiment, as Markdown or CSV; with --compare,
+// between runs of the same experiment, as Markdown or CSV; with --decisions,
+// each run's decisions by expected label in its task's order (Table I); with --compare,
 // groups of runs side by side with means and 95% intervals across seeds and
 // Fisher's exact test on their pooled trials (run_comparison.hpp); with
 // --reproduction, the paper's Tables I and II against a sweep's runs and its
@@ -25,6 +26,7 @@
 #include "core/config/did_you_mean.hpp"
 #include "core/path_checks.hpp"
 #include "paper/paper.hpp"
+#include "report/decision_table.hpp"
 #include "report/reproduction_figures.hpp"
 #include "report/reproduction_report.hpp"
 #include "report/run_comparison.hpp"
@@ -38,6 +40,7 @@ Examples:
   report                                        every completed run
   report --experiment corridor_pc corridor_mono --paper
   report --last 5 --metric demonstrations_train
+  report --experiment corridor_pc --decisions    each decision label: action choice, match
   report --experiment corridor_mono --csv > mono.csv
   report --compare --experiment corridor_pc corridor_ae corridor_mono --baseline corridor_mono
   report --compare --sweep SWEEP_ID --by policy.type --out results/compare
@@ -102,11 +105,12 @@ std::string no_run_matches(corrmp::ResultStore& store, corrmp::ReportQuery query
   int total = 0;
   if (query.completed_only) {
     query.completed_only = false;
-    std::map<std::string, int> by_status;
+    std::map<corrmp::RunStatus, int> by_status;
     for (const auto& run : corrmp::load_run_summaries(store, query)) ++by_status[run.status];
-    for (const char* status : {"failed", "interrupted", "running"}) {
+    for (const auto status :
+         {corrmp::RunStatus::failed, corrmp::RunStatus::interrupted, corrmp::RunStatus::running}) {
       if (by_status[status] == 0) continue;
-      counts.push_back(std::to_string(by_status[status]) + " " + status);
+      counts.push_back(std::to_string(by_status[status]) + " " + corrmp::to_string(status));
       total += by_status[status];
     }
   }
@@ -135,7 +139,8 @@ int main(int argc, char** argv) {
   corrmp::ReportFormat format;
   corrmp::ComparisonOptions comparison;
   std::string out_dir, plot_success;
-  bool csv = false, paper = false, all = false, compare = false, reproduction = false;
+  bool csv = false, paper = false, all = false, compare = false, reproduction = false,
+       decisions = false;
   app.add_option("--db", db_path, "result database")->capture_default_str();
   app.add_option("--experiment", query.experiments, "only these experiments");
   app.add_option("--run", query.runs, "only these run ids");
@@ -146,6 +151,9 @@ int main(int argc, char** argv) {
   app.add_flag("--csv", csv, "CSV instead of Markdown");
   app.add_flag("--paper", paper, "append the paper's rows (Markdown; corridor runs)");
   app.add_flag("--all", all, "include failed, interrupted and running runs");
+  app.add_flag("--decisions", decisions,
+               "each run's trials by expected decision, in its task's label order: action "
+               "choice, decision match, task success (Table I)");
   app.add_flag("--compare", compare,
                "compare groups of runs: means with 95% intervals across seeds, Fisher's exact "
                "test on the pooled trials");
@@ -175,6 +183,11 @@ int main(int argc, char** argv) {
   if (csv && paper) return usage_error("--paper's rows are Markdown only: drop --csv or --paper");
   if ((compare || reproduction) && paper) {
     return usage_error("--paper is for the run table; --compare and --reproduction have their own");
+  }
+  if (decisions && (compare || reproduction || paper || !plot_success.empty())) {
+    return usage_error(
+        "--decisions is a table of its own: drop --compare, --reproduction, "
+        "--paper and --plot-success");
   }
   if (reproduction && out_dir.empty()) return usage_error("--reproduction needs --out DIR");
   if (!plot_success.empty() && out_dir.empty())
@@ -265,11 +278,14 @@ int main(int argc, char** argv) {
       inputs.figure_notes = std::move(figures.notes);
       corrmp::write_reproduction_report(corrmp::reproduction_report(spec, inputs), out_dir);
       std::cout << "report: wrote " << out_dir << "/report.md and report.csv\n";
+    } else if (decisions) {
+      std::cout << (csv ? corrmp::decision_csv(runs) : corrmp::decision_markdown(runs));
     } else if (plot_success.empty()) {
       if (paper) {
         const corrmp::DecisionTablesSpec tables = corrmp::load_paper().decision_tables;
         if (corrmp::reference_rows_apply(runs, tables)) {
           format.reference_rows = corrmp::reference_rows(tables);
+          format.reference_columns = corrmp::reference_columns(tables);
         } else {
           std::cerr << "report: --paper: the paper's numbers are of the task " << tables.environment
                     << ", and no selected run is; none appended\n";

@@ -239,11 +239,11 @@ int main(int argc, char** argv) {
     corrmp::install_interrupt_handlers();
     limit_renderer_threads();
     const corrmp::RunResult result = corrmp::run_pipeline(experiment, options);
-    if (result.status == "completed") {
+    if (result.status == corrmp::RunStatus::completed) {
       spdlog::info("run {} completed: {}", result.run_id, result.run_dir);
       return 0;
     }
-    return result.status == "interrupted" ? 130 : 1;
+    return result.status == corrmp::RunStatus::interrupted ? 130 : 1;
   } catch (const corrmp::ConfigError& e) {
     std::cerr << e.what() << "\n";
     return 2;

@@ -167,10 +167,11 @@ std::vector<std::string> AutoencoderContext::state_names() const {
   return {params_.plot_state};
 }
 
-std::vector<std::pair<std::string, double>> AutoencoderContext::metrics() const {
-  std::vector<std::pair<std::string, double>> out;
-  if (train_mse_ >= 0) out.emplace_back("autoencoder_train_mse", train_mse_);
-  if (test_mse_ >= 0) out.emplace_back("autoencoder_test_mse", test_mse_);
+std::vector<Metric> AutoencoderContext::metrics() const {
+  std::vector<Metric> out;
+  // Of the images' pixel values, which have no unit.
+  if (train_mse_ >= 0) out.push_back({"autoencoder_train_mse", train_mse_, error_metric("")});
+  if (test_mse_ >= 0) out.push_back({"autoencoder_test_mse", test_mse_, error_metric("")});
   return out;
 }
 

@@ -43,7 +43,7 @@ class AutoencoderContext : public ContextExtractor {
   std::vector<MemoryNeed> memory_needs() const override;
   void write_outputs(const std::string& directory,
                      const std::vector<Demonstration>& demos) override;
-  std::vector<std::pair<std::string, double>> metrics() const override;
+  std::vector<Metric> metrics() const override;
 
  private:
   bool wanted(const std::string& segment) const;

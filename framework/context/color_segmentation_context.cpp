@@ -85,18 +85,21 @@ Eigen::VectorXd ColorSegmentationContext::extract(const std::string& segment,
 }
 
 void ColorSegmentationContext::add_metrics(const Accuracy& accuracy, const std::string& prefix,
-                                           std::vector<std::pair<std::string, double>>& out) {
+                                           std::vector<Metric>& out) {
   if (accuracy.extractions == 0) return;
-  out.emplace_back(prefix + "context_found_rate",
-                   static_cast<double>(accuracy.found) / accuracy.extractions);
+  out.push_back({prefix + "context_found_rate",
+                 static_cast<double>(accuracy.found) / accuracy.extractions,
+                 rate_metric(Better::higher)});
   if (accuracy.errors_m.empty()) return;
-  out.emplace_back(prefix + "context_error_median_mm", 1000.0 * median(accuracy.errors_m));
-  out.emplace_back(prefix + "context_error_max_mm",
-                   1000.0 * *std::max_element(accuracy.errors_m.begin(), accuracy.errors_m.end()));
+  out.push_back(
+      {prefix + "context_error_median_mm", 1000.0 * median(accuracy.errors_m), error_metric("mm")});
+  out.push_back({prefix + "context_error_max_mm",
+                 1000.0 * *std::max_element(accuracy.errors_m.begin(), accuracy.errors_m.end()),
+                 error_metric("mm")});
 }
 
-std::vector<std::pair<std::string, double>> ColorSegmentationContext::metrics() const {
-  std::vector<std::pair<std::string, double>> out;
+std::vector<Metric> ColorSegmentationContext::metrics() const {
+  std::vector<Metric> out;
   add_metrics(evaluation_, "", out);
   add_metrics(demonstrations_, "demonstrations_", out);
   return out;

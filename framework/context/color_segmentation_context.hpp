@@ -57,7 +57,7 @@ class ColorSegmentationContext : public ContextExtractor {
   // seen), context_error_median_mm and context_error_max_mm (of the seen
   // ones, against the true offset); the same prefixed demonstrations_ over
   // the demonstrations'.
-  std::vector<std::pair<std::string, double>> metrics() const override;
+  std::vector<Metric> metrics() const override;
 
  private:
   // Extractions and their accuracy, of one phase.
@@ -68,7 +68,7 @@ class ColorSegmentationContext : public ContextExtractor {
 
   bool wanted(const std::string& segment) const;
   static void add_metrics(const Accuracy& accuracy, const std::string& prefix,
-                          std::vector<std::pair<std::string, double>>& out);
+                          std::vector<Metric>& out);
 
   ColorSegmentationContextParams params_;
   Rng noise_;

@@ -9,6 +9,7 @@
 #include <vector>
 
 #include "core/memory_need.hpp"
+#include "core/metric.hpp"
 #include "core/seeds.hpp"
 #include "data/demonstrations.hpp"
 #include "data/observation.hpp"
@@ -51,8 +52,8 @@ class ContextExtractor {
   // Called once before the evaluation's trials: later extractions are of
   // scenarios never seen in training.
   virtual void start_evaluation() {}
-  // Measurements (name, value), recorded as run metrics after the evaluation.
-  virtual std::vector<std::pair<std::string, double>> metrics() const { return {}; }
+  // Measurements, each declared (core/metric.hpp), recorded as run metrics after the evaluation.
+  virtual std::vector<Metric> metrics() const { return {}; }
 };
 
 // Sets every segment's context of every demonstration from its start observation.

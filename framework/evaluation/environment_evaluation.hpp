@@ -23,7 +23,7 @@
 #include "envs/demonstration_source.hpp"
 #include "envs/environment.hpp"
 #include "policies/policy.hpp"
-#include "store/result_store.hpp"
+#include "store/records.hpp"
 
 namespace corrmp {
 

@@ -74,36 +74,43 @@ std::string metric_segment(const std::string& segment) { return segment + "_mp";
 std::vector<MetricRecord> evaluation_metrics(const TaskReport& task, bool decided,
                                              const std::vector<EvaluatedTrial>& trials,
                                              const std::map<std::string, TrajectoryError>& errors) {
+  const MetricDeclaration success = rate_metric(Better::higher);
+  const MetricDeclaration count = count_metric(Better::neither);
   std::vector<MetricRecord> m;
   const double n = std::max<double>(1.0, static_cast<double>(trials.size()));
-  m.push_back({"task_success_rate", count_successes(trials) / n});
-  if (decided) m.push_back({"decision_match_rate", count_matches(trials) / n});
+  m.push_back({"task_success_rate", count_successes(trials) / n, success});
+  if (decided) m.push_back({"decision_match_rate", count_matches(trials) / n, success});
   for (const auto& segment : task.error_segments) {
     const auto it = errors.find(segment);
     if (it == errors.end()) continue;
+    const std::string heading =
+        fmt::format("{}-MP error mean / max ({})", segment, task.error_unit);
     m.push_back({fmt::format("{}_error_mean_{}", metric_segment(segment), task.error_unit),
-                 it->second.mean});
-    m.push_back(
-        {fmt::format("{}_error_max_{}", metric_segment(segment), task.error_unit), it->second.max});
+                 it->second.mean, error_statistic(task.error_unit, heading, "mean")});
+    m.push_back({fmt::format("{}_error_max_{}", metric_segment(segment), task.error_unit),
+                 it->second.max, error_statistic(task.error_unit, heading, "max")});
   }
   const auto decisions = count_decisions(trials);
   for (const auto& label : task.decision_labels) {
     const auto it = decisions.find(label);
     if (it == decisions.end()) continue;
     const DecisionCounts& c = it->second;
-    m.push_back({"expected_" + label, static_cast<double>(c.expected)});
+    m.push_back({"expected_" + label, static_cast<double>(c.expected), count});
     if (decided) {
-      m.push_back({"decision_match_rate_" + label, static_cast<double>(c.matched) / c.expected});
+      m.push_back(
+          {"decision_match_rate_" + label, static_cast<double>(c.matched) / c.expected, success});
     }
-    m.push_back({"task_success_rate_" + label, static_cast<double>(c.succeeded) / c.expected});
+    m.push_back(
+        {"task_success_rate_" + label, static_cast<double>(c.succeeded) / c.expected, success});
   }
   for (const auto& name : task.outcome_metrics) {
-    m.push_back({name + "_rate", outcome_mean(trials, name)});
+    m.push_back({name + "_rate", outcome_mean(trials, name), rate_metric(Better::neither)});
   }
   for (const auto& category : task.failure_categories) {
     std::string key = "failures_" + category;
     std::replace(key.begin(), key.end(), ' ', '_');
-    m.push_back({key, static_cast<double>(count_failures(trials, category))});
+    m.push_back(
+        {key, static_cast<double>(count_failures(trials, category)), count_metric(Better::lower)});
   }
   return m;
 }

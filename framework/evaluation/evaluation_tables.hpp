@@ -13,7 +13,7 @@
 #include "data/evaluated_trial.hpp"
 #include "envs/environment.hpp"
 #include "evaluation/trajectory_error.hpp"
-#include "store/result_store.hpp"
+#include "store/records.hpp"
 
 namespace corrmp {
 
@@ -21,7 +21,11 @@ namespace corrmp {
 // once, expected_L and task_success_rate_L, and when the policy decides,
 // decision_match_rate and decision_match_rate_L; <segment>_mp_error_mean_<unit> and ..._max_<unit>;
 // <metric>_rate for each outcome metric (its mean over the trials);
-// failures_<category> (spaces as '_') for each failure category.
+// failures_<category> (spaces as '_') for each failure category. Each is declared
+// (core/metric.hpp): the rates in [0, 1], success and decision match higher is
+// better; the errors at least 0 in the task's error unit, lower is better, their
+// mean and max under the heading "<segment>-MP error mean / max (<unit>)"; the
+// counts at least 0, failures lower is better.
 // `decided`: whether the policy makes the task's decision at all (one
 // without the decision segment, such as pre-MP then post-MP, does not: its
 // decision match is not reported).

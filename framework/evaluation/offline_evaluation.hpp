@@ -10,7 +10,6 @@
 #include "data/demonstrations.hpp"
 #include "evaluation/trajectory_error.hpp"
 #include "policies/policy.hpp"
-#include "store/result_store.hpp"
 
 namespace corrmp {
 

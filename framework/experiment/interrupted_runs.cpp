@@ -34,7 +34,10 @@ bool mark_run_json_interrupted(const std::string& path, const std::string& finis
   // The two members as the pipeline's JsonObject writes them at an indent of 2.
   std::string members = JsonObject().add("finished_at", finished_at).add("failure", failure).str(2);
   members = members.substr(2, members.rfind('\n') - 2);  // without the braces' lines
-  if (!replace_once(text, "\n  \"status\": \"running\",", "\n  \"status\": \"interrupted\",") ||
+  const auto status_line = [](RunStatus status) {
+    return "\n  \"status\": \"" + to_string(status) + "\",";
+  };
+  if (!replace_once(text, status_line(RunStatus::running), status_line(RunStatus::interrupted)) ||
       !replace_once(text, "\n  \"finished_at\": null,", "\n" + members + ","))
     return false;
   write_file_atomically(path, text);

@@ -23,6 +23,7 @@
 #include "experiment/interrupted_runs.hpp"
 #include "experiment/policy_fitting.hpp"
 #include "experiment/provenance.hpp"
+#include "experiment/recorded_task.hpp"
 #include "experiment/training_curves.hpp"
 #include "store/result_store.hpp"
 
@@ -46,7 +47,7 @@ void write_run_json(const fs::path& dir, const Experiment& experiment, int64_t r
   JsonObject run;
   run.add("run_id", run_id)
       .add("experiment", experiment.config.experiment.name)
-      .add("status", result.status)
+      .add("status", to_string(result.status))
       .add("seed", static_cast<int64_t>(experiment.config.seed))
       .add("config", experiment.config_path)
       .add("config_hash", experiment.config_hash)
@@ -118,8 +119,10 @@ void run_stages(Experiment& experiment, const fs::path& dir, const RunOptions& o
   check_interrupt();
   spdlog::info("collected {} training and {} validation demonstrations", demos.train.size(),
                demos.validation.size());
-  metrics.push_back({"demonstrations_train", static_cast<double>(demos.train.size())});
-  metrics.push_back({"demonstrations_validation", static_cast<double>(demos.validation.size())});
+  const MetricDeclaration count = count_metric(Better::neither);
+  metrics.push_back({"demonstrations_train", static_cast<double>(demos.train.size()), count});
+  metrics.push_back(
+      {"demonstrations_validation", static_cast<double>(demos.validation.size()), count});
   if (!experiment.policy) {
     spdlog::warn("no policy section: stopping after collection");
     return;
@@ -148,7 +151,8 @@ void run_stages(Experiment& experiment, const fs::path& dir, const RunOptions& o
         summary.segment, summary.parameters, summary.report.best_validation.mean,
         summary.report.best_validation.max, summary.report.best_update, summary.report.updates,
         summary.report.seconds, team);
-    metrics.push_back({summary.segment + "_parameters", static_cast<double>(summary.parameters)});
+    metrics.push_back(
+        {summary.segment + "_parameters", static_cast<double>(summary.parameters), count});
   }
   experiment.policy->save((dir / "models").string());
   write_training_curves(summaries, (dir / "training_curves.csv").string());
@@ -186,8 +190,12 @@ void run_stages(Experiment& experiment, const fs::path& dir, const RunOptions& o
   for (const auto& result : evaluate_offline(*experiment.policy, demos.validation, csv_dir)) {
     spdlog::info("'{}' on {} held-out demonstrations: error mean {:.4g}, max {:.4g}",
                  result.segment, demos.validation.size(), result.error.mean, result.error.max);
-    metrics.push_back({result.segment + "_error_mean", result.error.mean});
-    metrics.push_back({result.segment + "_error_max", result.error.max});
+    // In the demonstrations' own units, which they do not declare.
+    const std::string heading = result.segment + " error mean / max (held-out)";
+    metrics.push_back(
+        {result.segment + "_error_mean", result.error.mean, error_statistic("", heading, "mean")});
+    metrics.push_back(
+        {result.segment + "_error_max", result.error.max, error_statistic("", heading, "max")});
   }
 }
 
@@ -217,7 +225,6 @@ RunResult run_pipeline(Experiment& experiment, const RunOptions& options) {
   check_output_folder(fs::path(options.out_dir) / experiment.config.experiment.name);
   const GitState git = build_git_state();
   RunResult result;
-  result.status = "running";
   RunRecord record{experiment.config.experiment.name,
                    experiment.resolved_yaml,
                    experiment.config_hash,
@@ -227,7 +234,9 @@ RunResult run_pipeline(Experiment& experiment, const RunOptions& options) {
                    "",
                    options.sweep_id,
                    options.job_index,
-                   options.axes_json};
+                   options.axes_json,
+                   {}};
+  if (experiment.environment) record.task = recorded_task(experiment.environment->report());
   result.run_id = store.begin_run(record);
   const std::string started_at = utc_timestamp();
   // A sweep's runs get their own folder: the shard databases of a Slurm array
@@ -256,21 +265,21 @@ RunResult run_pipeline(Experiment& experiment, const RunOptions& options) {
     run_stages(experiment, dir, options, trials, metrics);
     // Read last: an extractor may measure itself on every context it gave.
     if (experiment.context_extractor) {
-      for (const auto& [name, value] : experiment.context_extractor->metrics()) {
-        metrics.push_back({name, value});
+      for (auto& metric : experiment.context_extractor->metrics()) {
+        metrics.push_back(std::move(metric));
       }
     }
     store.complete_run(result.run_id, trials, metrics);
-    result.status = "completed";
+    result.status = RunStatus::completed;
   } catch (const Interrupted& e) {
-    result.status = "interrupted";
+    result.status = RunStatus::interrupted;
     result.failure = e.what();
   } catch (const std::exception& e) {
-    result.status = "failed";
+    result.status = RunStatus::failed;
     result.failure = e.what();
   }
-  if (result.status != "completed") {
-    spdlog::error("run {} {}: {}", result.run_id, result.status, result.failure);
+  if (result.status != RunStatus::completed) {
+    spdlog::error("run {} {}: {}", result.run_id, to_string(result.status), result.failure);
     store.end_run(result.run_id, result.status, result.failure);
   }
   if (fs::exists(dir)) {

@@ -7,6 +7,7 @@
 #include <string>
 
 #include "experiment/experiment.hpp"
+#include "store/run_status.hpp"
 
 namespace corrmp {
 
@@ -24,7 +25,7 @@ struct RunOptions {
 
 struct RunResult {
   int64_t run_id = 0;
-  std::string status;  // completed, failed or interrupted
+  RunStatus status = RunStatus::running;  // completed, failed or interrupted once it returns
   std::string run_dir;
   std::string failure;
 };

@@ -3,7 +3,6 @@
 
 #include <fmt/format.h>
 #include <spdlog/version.h>
-#include <sqlite3.h>
 
 #include <LinearMath/btScalar.h>
 #include <Eigen/Core>
@@ -12,6 +11,8 @@
 #include <array>
 #include <cstdio>
 #include <memory>
+
+#include "store/result_store.hpp"
 
 namespace corrmp {
 
@@ -64,7 +65,7 @@ std::vector<std::pair<std::string, std::string>> library_versions() {
   return {
       {"eigen",
        fmt::format("{}.{}.{}", EIGEN_WORLD_VERSION, EIGEN_MAJOR_VERSION, EIGEN_MINOR_VERSION)},
-      {"sqlite", sqlite3_libversion()},
+      {"sqlite", sqlite_library_version()},
       {"bullet", fmt::format("{}", btGetVersion())},
       {"opencv", CV_VERSION},
       {"spdlog", fmt::format("{}.{}.{}", SPDLOG_VER_MAJOR, SPDLOG_VER_MINOR, SPDLOG_VER_PATCH)},

@@ -220,6 +220,14 @@ std::string decision_tables_section(const DecisionTablesSpec& spec, const RunsOf
   return out + "\n";
 }
 
+std::vector<ErrorMetric> reference_columns(const DecisionTablesSpec& spec) {
+  std::vector<ErrorMetric> columns;
+  for (const auto& error : spec.errors) {
+    columns.push_back({error.mean, error.max, error.heading + " error mean / max"});
+  }
+  return columns;
+}
+
 std::vector<ReferenceRow> reference_rows(const DecisionTablesSpec& spec) {
   std::vector<ReferenceRow> rows;
   for (const auto& column : spec.columns) {

@@ -112,6 +112,8 @@ std::string decision_tables_section(const DecisionTablesSpec& spec, const RunsOf
 // The run table's rows of the reference: per column, its task successes of
 // its trials, its decision match over all trials (the per-label rates
 // weighted by the expected counts) and its errors.
+// The error columns those rows fill, with the reference's headings.
+std::vector<ErrorMetric> reference_columns(const DecisionTablesSpec& spec);
 std::vector<ReferenceRow> reference_rows(const DecisionTablesSpec& spec);
 
 // Whether some run is of the spec's task (environment.type).

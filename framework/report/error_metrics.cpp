@@ -1,7 +1,5 @@
-// Trajectory error metrics by name (error_metrics.hpp).
+// Trajectory error metrics by their declarations (error_metrics.hpp).
 #include "report/error_metrics.hpp"
-
-#include <fmt/format.h>
 
 #include <algorithm>
 
@@ -9,39 +7,38 @@ namespace corrmp {
 
 namespace {
 
-const std::string kClosedLoopMean = "_mp_error_mean_";  // <segment>_mp_error_mean_<unit>
-const std::string kHeldOutMean = "_error_mean";         // <segment>_error_mean
-
-bool ends_with(const std::string& text, const std::string& end) {
-  return text.size() >= end.size() && text.compare(text.size() - end.size(), end.size(), end) == 0;
+// The run's metric declared as `statistic` under `heading`, or "".
+std::string statistic_under(const RunSummary& run, const std::string& heading,
+                            const std::string& statistic) {
+  for (const auto& name : run.metric_order) {
+    const auto it = run.declarations.find(name);
+    if (it != run.declarations.end() && it->second.heading == heading &&
+        it->second.statistic == statistic) {
+      return name;
+    }
+  }
+  return "";
 }
 
 }  // namespace
-
-std::optional<ErrorMetric> error_metric(const std::string& name) {
-  if (const auto at = name.find(kClosedLoopMean); at != std::string::npos && at > 0) {
-    const std::string segment = name.substr(0, at), unit = name.substr(at + kClosedLoopMean.size());
-    if (unit.empty()) return std::nullopt;
-    return ErrorMetric{name, segment + "_mp_error_max_" + unit,
-                       fmt::format("{}-MP error mean / max ({})", segment, unit)};
-  }
-  if (ends_with(name, kHeldOutMean) && name.size() > kHeldOutMean.size()) {
-    const std::string segment = name.substr(0, name.size() - kHeldOutMean.size());
-    return ErrorMetric{name, segment + "_error_max",
-                       fmt::format("{} error mean / max (held-out)", segment)};
-  }
-  return std::nullopt;
-}
 
 std::vector<ErrorMetric> error_metrics(const std::vector<RunSummary>& runs) {
   std::vector<ErrorMetric> errors;
   for (const auto& run : runs) {
     for (const auto& name : run.metric_order) {
-      const auto error = error_metric(name);
-      if (!error) continue;
-      const bool known = std::any_of(errors.begin(), errors.end(),
-                                     [&](const ErrorMetric& e) { return e.mean == error->mean; });
-      if (!known) errors.push_back(*error);
+      const auto declaration = run.declarations.find(name);
+      if (declaration == run.declarations.end() || declaration->second.heading.empty() ||
+          declaration->second.statistic != "mean") {
+        continue;
+      }
+      const std::string& heading = declaration->second.heading;
+      const auto known = std::find_if(errors.begin(), errors.end(),
+                                      [&](const ErrorMetric& e) { return e.mean == name; });
+      if (known == errors.end()) {
+        errors.push_back({name, statistic_under(run, heading, "max"), heading});
+      } else if (known->max.empty()) {  // the first run recording it had no max
+        known->max = statistic_under(run, heading, "max");
+      }
     }
   }
   return errors;

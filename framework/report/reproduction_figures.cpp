@@ -17,7 +17,7 @@
 #include "plot/interval_chart.hpp"
 #include "plot/line_figure.hpp"
 #include "report/metric_ranges.hpp"
-#include "store/statement.hpp"
+#include "store/run_queries.hpp"
 
 namespace corrmp {
 
@@ -233,10 +233,6 @@ std::pair<std::vector<double>, std::vector<std::vector<double>>> mean_curve(
 // ---- run files -------------------------------------------------------------
 
 RunFilesById load_run_files(ResultStore& store, const std::vector<RunSummary>& runs) {
-  Statement directory(store.handle(), "SELECT out_dir FROM runs WHERE id = ?");
-  Statement trials(store.handle(),
-                   "SELECT trial, expected_action, chosen_action, success FROM trials "
-                   "WHERE run_id = ? ORDER BY trial");
   std::vector<fs::path> bases{fs::current_path()};
   for (fs::path folder = fs::absolute(store.path()).parent_path();; folder = folder.parent_path()) {
     bases.push_back(folder);
@@ -245,9 +241,7 @@ RunFilesById load_run_files(ResultStore& store, const std::vector<RunSummary>& r
   RunFilesById out;
   for (const auto& run : runs) {
     RunFiles files;
-    directory.bind(1, run.id);
-    if (directory.step()) files.recorded = directory.column_text(0);
-    directory.reset();
+    files.recorded = run.out_dir;
     if (!files.recorded.empty()) {
       const fs::path recorded(files.recorded);
       if (recorded.is_absolute()) {
@@ -261,12 +255,10 @@ RunFilesById load_run_files(ResultStore& store, const std::vector<RunSummary>& r
         }
       }
     }
-    trials.bind(1, run.id);
-    while (trials.step()) {
-      files.trials.push_back({static_cast<int>(trials.column_int(0)), trials.column_text(1),
-                              trials.column_text(2), trials.column_int(3) != 0});
+    for (const TrialRecord& trial : run_trials(store, run.id)) {
+      files.trials.push_back(
+          {trial.trial, trial.expected_action, trial.chosen_action, trial.success});
     }
-    trials.reset();
     out[run.id] = std::move(files);
   }
   return out;
@@ -486,7 +478,7 @@ void write_success_figure(const SuccessByParameter& data, const std::string& png
     IntervalSeries drawn{series.group.empty() ? "task success" : series.group, {}};
     for (const auto& point : series.points) {
       const MeanInterval& m = point.success;
-      const IntervalBounds bounds = metric_interval("task_success_rate", m);
+      const IntervalBounds bounds = metric_interval(rate_metric(Better::higher), m);
       drawn.points.push_back({point.x, 100.0 * m.mean, 100.0 * bounds.low, 100.0 * bounds.high});
     }
     chart.series.push_back(std::move(drawn));
@@ -499,7 +491,7 @@ std::string success_csv(const SuccessByParameter& data) {
   std::string out = "group,value,runs,mean,ci_low,ci_high\n";
   for (const auto& series : data.series) {
     for (const auto& p : series.points) {
-      const IntervalBounds bounds = metric_interval("task_success_rate", p.success);
+      const IntervalBounds bounds = metric_interval(rate_metric(Better::higher), p.success);
       out += fmt::format("{},{},{},{},{},{}\n", series.group, p.value, p.success.count,
                          number(p.success.mean), number(bounds.low), number(bounds.high));
     }

@@ -61,9 +61,16 @@ SuccessDifference success_difference(const RunGroup& group, const RunGroup& vers
   return d;
 }
 
-// The interval of a difference in task_success_rate, clipped to [-1, 1].
-IntervalBounds difference_bounds(const DifferenceInterval& d) {
-  return clip_interval(d.low, d.high, difference_range(metric_range(kSuccess)));
+// What the runs declared `metric` to be; nothing known when none recorded it.
+MetricDeclaration declaration_of(const RunComparison& comparison, const std::string& metric) {
+  const auto it = comparison.declarations.find(metric);
+  return it == comparison.declarations.end() ? MetricDeclaration{} : it->second;
+}
+
+// The interval of a difference in task_success_rate, clipped to the differences of its range
+// ([-1, 1]).
+IntervalBounds difference_bounds(const RunComparison& comparison, const DifferenceInterval& d) {
+  return clip_interval(d.low, d.high, difference_range(declaration_of(comparison, kSuccess).range));
 }
 
 std::string signed_number(double value) {
@@ -71,10 +78,10 @@ std::string signed_number(double value) {
   return (value >= 0 ? "+" : "") + report_number(value);
 }
 
-std::string difference_text(const DifferenceInterval& d) {
+std::string difference_text(const RunComparison& comparison, const DifferenceInterval& d) {
   if (std::isnan(d.difference)) return "-";
   if (!d.defined()) return signed_number(d.difference) + " (a group has 1 run, no interval)";
-  const IntervalBounds bounds = difference_bounds(d);
+  const IntervalBounds bounds = difference_bounds(comparison, d);
   return fmt::format("{} [{}, {}]", signed_number(d.difference), report_number(bounds.low),
                      report_number(bounds.high));
 }
@@ -113,6 +120,9 @@ RunComparison compare_runs(const std::vector<RunSummary>& runs, const Comparison
   }
   check_group_keys(runs, options.group_by);
   comparison.metrics = metric_columns(runs, options.extra_metrics);
+  for (const auto& metric : comparison.metrics) {
+    comparison.declarations[metric] = declared_metric(runs, metric);
+  }
 
   std::vector<int> successes;
   std::vector<std::vector<const RunSummary*>> members;
@@ -218,7 +228,7 @@ std::string comparison_markdown(const RunComparison& comparison) {
                        group.trials, pooled_success_text(group.pooled_success));
     for (const auto& metric : comparison.metrics) {
       const MeanInterval& m = group.metrics.at(metric);
-      const IntervalBounds bounds = metric_interval(metric, m);
+      const IntervalBounds bounds = metric_interval(declaration_of(comparison, metric), m);
       std::string cell = mean_with_interval(m, bounds.low, bounds.high);
       if (m.count > 0 && static_cast<size_t>(m.count) != group.runs.size()) {
         cell += fmt::format(" (n={})", m.count);
@@ -252,7 +262,7 @@ std::string comparison_markdown(const RunComparison& comparison) {
         pooled_short(d.group_pooled), pooled_short(d.versus_pooled),
         std::isnan(d.pooled_difference) ? std::string("-")
                                         : fmt::format("{:+.1f} pp", 100 * d.pooled_difference),
-        p_value_text(d), difference_text(d.across_seeds));
+        p_value_text(d), difference_text(comparison, d.across_seeds));
   }
   return out;
 }
@@ -268,7 +278,7 @@ std::string comparison_csv(const RunComparison& comparison) {
                        csv_number(p.rate), csv_number(p.low), csv_number(p.high));
     for (const auto& metric : comparison.metrics) {
       const MeanInterval& m = group.metrics.at(metric);
-      const IntervalBounds bounds = metric_interval(metric, m);
+      const IntervalBounds bounds = metric_interval(declaration_of(comparison, metric), m);
       out += fmt::format("mean,{},,{},{},{},,{},{},{},,,\n", csv_cell(group.name), csv_cell(metric),
                          m.count, group.trials, csv_number(m.mean), csv_number(bounds.low),
                          csv_number(bounds.high));
@@ -279,14 +289,15 @@ std::string comparison_csv(const RunComparison& comparison) {
         std::find_if(comparison.groups.begin(), comparison.groups.end(), [&](const RunGroup& g) {
           return g.name == d.group;
         })->runs.size();
-    out += fmt::format(
-        "difference,{},{},{},{},{},{},{},{},{},{},{},{}\n", csv_cell(d.group), csv_cell(d.versus),
-        kSuccess, runs, d.group_pooled.trials, d.group_pooled.successes,
-        csv_number(d.across_seeds.difference), csv_number(difference_bounds(d.across_seeds).low),
-        csv_number(difference_bounds(d.across_seeds).high), d.versus_pooled.trials,
-        d.versus_pooled.successes,
-        d.group_pooled.trials == 0 || d.versus_pooled.trials == 0 ? std::string()
-                                                                  : csv_number(d.fisher_p));
+    out += fmt::format("difference,{},{},{},{},{},{},{},{},{},{},{},{}\n", csv_cell(d.group),
+                       csv_cell(d.versus), kSuccess, runs, d.group_pooled.trials,
+                       d.group_pooled.successes, csv_number(d.across_seeds.difference),
+                       csv_number(difference_bounds(comparison, d.across_seeds).low),
+                       csv_number(difference_bounds(comparison, d.across_seeds).high),
+                       d.versus_pooled.trials, d.versus_pooled.successes,
+                       d.group_pooled.trials == 0 || d.versus_pooled.trials == 0
+                           ? std::string()
+                           : csv_number(d.fisher_p));
   }
   return out;
 }

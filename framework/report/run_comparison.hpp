@@ -5,9 +5,9 @@
 // difference in task success between groups: Fisher's exact test on the
 // trials pooled across seeds, and the difference of means across seeds with
 // Welch's interval. Printed as Markdown or CSV with every interval clipped to
-// the values its metric can take (metric_ranges.hpp). A group that pools more than
-// seeds (several experiments, or runs that differ in a setting other than a
-// seed) is named in the comparison's notes.
+// the values its metric can take (its declared range, metric_ranges.hpp). A group that pools more
+// than seeds (several experiments, or runs that differ in a setting other than a seed) is named in
+// the comparison's notes.
 #pragma once
 
 #include <cstdint>
@@ -63,6 +63,7 @@ struct SuccessDifference {
 struct RunComparison {
   std::string grouping;              // "experiment" or the group_by keys
   std::vector<std::string> metrics;  // the metric columns, in order
+  std::map<std::string, MetricDeclaration> declarations;  // of the metric columns, by name
   std::vector<RunGroup> groups;      // in the order of their first run
   std::vector<SuccessDifference> differences;
 };

@@ -60,13 +60,17 @@ std::string report_markdown(const std::vector<RunSummary>& runs, const ReportFor
   const auto varying = varying_settings(runs);
   const std::vector<ReferenceRow>& paper = format.reference_rows;
   std::vector<ErrorMetric> errors = error_metrics(runs);
-  for (const auto& row : paper) {  // the paper's errors get their columns too
-    for (const auto& [mean, text] : row.errors) {
+  for (const auto& column : format.reference_columns) {
+    const bool known = std::any_of(errors.begin(), errors.end(),
+                                   [&](const ErrorMetric& c) { return c.mean == column.mean; });
+    if (!known) errors.push_back(column);
+  }
+  for (const auto& row : paper) {  // an error only a reference row has, headed by its name
+    for (const auto& entry : row.errors) {
+      const std::string& mean = entry.first;
       const bool known = std::any_of(errors.begin(), errors.end(),
-                                     // A structured binding is captured through an
-                                     // init-capture: C++17 (clang) allows no other way.
-                                     [&key = mean](const ErrorMetric& c) { return c.mean == key; });
-      if (const auto error = error_metric(mean); !known && error) errors.push_back(*error);
+                                     [&](const ErrorMetric& c) { return c.mean == mean; });
+      if (!known) errors.push_back({mean, "", mean});
     }
   }
   std::string out = "| run | experiment |";
@@ -88,7 +92,7 @@ std::string report_markdown(const std::vector<RunSummary>& runs, const ReportFor
   out += "\n" + rule + "\n";
   for (const auto& run : runs) {
     out += fmt::format("| {} | {} |", run.id, markdown_cell(run.experiment));
-    if (format.status_column) out += " " + markdown_cell(run.status) + " |";
+    if (format.status_column) out += " " + markdown_cell(to_string(run.status)) + " |";
     out += fmt::format(" {} | {} | {} |", markdown_cell(varies_text(run, varying)),
                        success_text(run), percent_text(metric(run, "decision_match_rate")));
     for (const auto& column : errors) out += " " + pair_text(run, column) + " |";
@@ -97,17 +101,15 @@ std::string report_markdown(const std::vector<RunSummary>& runs, const ReportFor
     }
     out += "\n";
   }
-  {
-    for (const auto& row : paper) {
-      out += fmt::format("| | {} |{} | {} | {} |", row.label, format.status_column ? " |" : "",
-                         row.success, row.decision);
-      for (const auto& column : errors) {
-        const auto cell = row.errors.find(column.mean);
-        out += " " + (cell == row.errors.end() ? std::string() : cell->second) + " |";
-      }
-      for (size_t i = 0; i < format.extra_metrics.size(); ++i) out += " |";
-      out += "\n";
+  for (size_t r = 0; r < paper.size(); ++r) {
+    out += fmt::format("| | {} |{} | {} | {} |", paper[r].label, format.status_column ? " |" : "",
+                       paper[r].success, paper[r].decision);
+    for (const auto& column : errors) {
+      const auto cell = paper[r].errors.find(column.mean);
+      out += " " + (cell == paper[r].errors.end() ? std::string() : cell->second) + " |";
     }
+    for (size_t i = 0; i < format.extra_metrics.size(); ++i) out += " |";
+    out += "\n";
   }
   return out;
 }
@@ -124,7 +126,7 @@ std::string report_csv(const std::vector<RunSummary>& runs, const ReportFormat& 
   for (const auto& c : columns) out += "," + csv_cell(c);
   out += "\n";
   for (const auto& run : runs) {
-    out += fmt::format("{},{},{},{},{}", run.id, csv_cell(run.experiment), run.status,
+    out += fmt::format("{},{},{},{},{}", run.id, csv_cell(run.experiment), to_string(run.status),
                        csv_cell(varies_text(run, varying)), run.trials);
     for (const auto& c : columns) {
       const double* value = metric(run, c);

@@ -8,6 +8,7 @@
 #include <string>
 #include <vector>
 
+#include "report/error_metrics.hpp"
 #include "report/run_summaries.hpp"
 
 namespace corrmp {
@@ -22,6 +23,9 @@ struct ReferenceRow {
 struct ReportFormat {
   std::vector<std::string> extra_metrics;    // more metric columns, by name
   std::vector<ReferenceRow> reference_rows;  // appended to the Markdown table
+  // The error columns the reference rows fill, added after the runs' own when no run recorded
+  // them.
+  std::vector<ErrorMetric> reference_columns;
   // Each run's status (completed, failed, ...) in a column of the Markdown
   // table, for report --all; the CSV always has one.
   bool status_column = false;

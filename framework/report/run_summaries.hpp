@@ -1,8 +1,8 @@
 // Recorded runs read back from the result store for reports: each run's
-// status, trials (counted, and tallied per expected action), metrics,
-// flattened resolved config and sweep axes, and the settings that vary between
-// runs of the same experiment (a sweep's parameters). docs/architecture.md,
-// "Database".
+// status, trials (counted, and tallied per expected action), metrics with their
+// declarations, its task's declaration, flattened resolved config and sweep
+// axes, and the settings that vary between runs of the same experiment (a
+// sweep's parameters). docs/architecture.md, "Database".
 #pragma once
 
 #include <cstdint>
@@ -11,7 +11,11 @@
 #include <string>
 #include <vector>
 
+#include "core/metric.hpp"
+#include "store/records.hpp"
 #include "store/result_store.hpp"
+#include "store/run_queries.hpp"
+#include "store/run_status.hpp"
 
 namespace corrmp {
 
@@ -26,25 +30,23 @@ struct ActionTally {
 struct RunSummary {
   int64_t id = 0;
   std::string experiment;
-  std::string status;
+  RunStatus status = RunStatus::completed;
   int trials = 0;
   int successes = 0;                               // trials that succeeded
   std::map<std::string, ActionTally> by_expected;  // by expected action ("" if none)
+  std::vector<std::string> expected_order;         // the expected actions, first seen first
   std::string sweep_id;                            // empty outside a sweep
   int job_index = -1;                              // the job within the sweep
   std::map<std::string, std::string> axes;         // the sweep's axis values, as written
   std::map<std::string, std::string> settings;     // the resolved config, flattened
+  std::string out_dir;                             // the run's folder as recorded
   std::map<std::string, double> metrics;
   std::vector<std::string> metric_order;  // the names as the run recorded them
+  std::map<std::string, MetricDeclaration> declarations;  // of the metrics, by name
+  std::optional<TaskDeclaration> task;  // none without an environment or in an old database
 };
 
-struct ReportQuery {
-  std::vector<std::string> experiments;  // empty: every experiment
-  std::vector<int64_t> runs;             // empty: every run
-  std::vector<std::string> sweeps;       // empty: runs of any sweep or none
-  int last = 0;                          // > 0: only the newest `last` runs
-  bool completed_only = true;
-};
+using ReportQuery = RunSelection;
 
 // The runs the query selects, oldest first. Databases written before sweeps
 // were recorded (no runs.sweep_id) load with empty sweep fields; selecting by
@@ -53,6 +55,17 @@ std::vector<RunSummary> load_run_summaries(ResultStore& store, const ReportQuery
 
 // Whether runs have the sweep columns (sweep_id, job_index, axes).
 bool has_sweep_columns(ResultStore& store);
+
+// The declaration of `metric` by the first of `runs` that recorded it; a metric no run recorded
+// is declared with nothing known (unbounded, no unit).
+MetricDeclaration declared_metric(const std::vector<RunSummary>& runs, const std::string& metric);
+MetricDeclaration declared_metric(const std::vector<const RunSummary*>& runs,
+                                  const std::string& metric);
+
+// The decision labels of the run in table order: those its task declared, then any other
+// expected action of its trials in the order first seen (all of them, first seen first, for a
+// run recorded before runs stored their task's declaration).
+std::vector<std::string> decision_labels(const RunSummary& run);
 
 struct SweepSummary {
   std::string id, name, created_at;

@@ -14,8 +14,11 @@
 #include <iterator>
 
 #include "core/path_checks.hpp"
+#include "store/legacy_metrics.hpp"
+#include "store/metric_rows.hpp"
 #include "store/run_uid.hpp"
 #include "store/statement.hpp"
+#include "store/task_rows.hpp"
 
 namespace corrmp {
 
@@ -62,7 +65,28 @@ CREATE TABLE IF NOT EXISTS trials (
 CREATE TABLE IF NOT EXISTS metrics (
   run_id INTEGER NOT NULL REFERENCES runs(id),
   name TEXT NOT NULL,
-  value REAL
+  value REAL,
+  unit TEXT,
+  range_min REAL,
+  range_max REAL,
+  better TEXT CHECK (better IN ('higher', 'lower', 'neither')),
+  heading TEXT,
+  statistic TEXT
+);
+CREATE TABLE IF NOT EXISTS run_tasks (
+  run_id INTEGER PRIMARY KEY REFERENCES runs(id),
+  trajectory_columns TEXT NOT NULL,
+  error_unit TEXT NOT NULL,
+  error_scale REAL NOT NULL,
+  error_segments TEXT NOT NULL,
+  error_columns TEXT NOT NULL,
+  decision_segment TEXT NOT NULL,
+  decision_labels TEXT NOT NULL,
+  relative_columns TEXT NOT NULL,
+  plot_horizontal INTEGER NOT NULL,
+  plot_vertical INTEGER NOT NULL,
+  outcome_metrics TEXT NOT NULL,
+  failure_categories TEXT NOT NULL
 );
 CREATE INDEX IF NOT EXISTS trials_run ON trials(run_id);
 CREATE INDEX IF NOT EXISTS metrics_run ON metrics(run_id);
@@ -94,6 +118,30 @@ void give_runs_derived_uids(sqlite3* db) {
   for (const auto& [id, uid] : uids) set_uid.bind(1, uid).bind(2, id).run();
 }
 
+// Version 4: each metric's declaration (its unit, range, direction and report column) and each
+// run's task declaration (the run_tasks table, made by kSchema). The metrics recorded before get
+// the declaration their names imply (declare_legacy_metrics); their runs have no task declaration.
+constexpr const char* kMigrateToV4 = R"sql(
+ALTER TABLE metrics ADD COLUMN unit TEXT;
+ALTER TABLE metrics ADD COLUMN range_min REAL;
+ALTER TABLE metrics ADD COLUMN range_max REAL;
+ALTER TABLE metrics ADD COLUMN better TEXT CHECK (better IN ('higher', 'lower', 'neither'));
+ALTER TABLE metrics ADD COLUMN heading TEXT;
+ALTER TABLE metrics ADD COLUMN statistic TEXT;
+)sql";
+
+void declare_legacy_metrics(sqlite3* db) {
+  std::vector<std::string> names;
+  Statement distinct(db, "SELECT DISTINCT name FROM metrics");
+  while (distinct.step()) names.push_back(distinct.column_text(0));
+  Statement declare(db, fmt::format("UPDATE metrics SET ({}) = (?, ?, ?, ?, ?, ?) WHERE name = ?",
+                                    kDeclarationColumns));
+  for (const auto& name : names) {
+    bind_declaration(declare, 1, inferred_declaration(name));
+    declare.bind(kDeclarationColumnCount + 1, name).run();
+  }
+}
+
 // Whether process `pid` of this host exists and has not ended. One that ended but that its parent
 // has not reaped yet (a zombie: a job killed with its driver, for a moment) has ended.
 bool process_alive(int64_t pid) {
@@ -115,6 +163,8 @@ std::string utc_timestamp() {
   std::strftime(buffer, sizeof buffer, "%Y-%m-%dT%H:%M:%SZ", &utc);
   return buffer;
 }
+
+std::string sqlite_library_version() { return sqlite3_libversion(); }
 
 std::string host_name() {
   char buffer[256] = {};
@@ -184,11 +234,6 @@ void ResultStore::execute(const std::string& sql) {
   }
 }
 
-std::string ResultStore::query_text(const std::string& sql) {
-  Statement statement(db_, sql);
-  return statement.step() ? statement.column_text(0) : std::string();
-}
-
 int64_t ResultStore::query_int(const std::string& sql) {
   Statement statement(db_, sql);
   return statement.step() ? statement.column_int(0) : 0;
@@ -225,6 +270,10 @@ void ResultStore::migrate(bool existed_empty) {
     if (version >= 1 && version < 3) {
       execute(kMigrateToV3);
       give_runs_derived_uids(db_);
+    }
+    if (version >= 1 && version < 4) {
+      execute(kMigrateToV4);
+      declare_legacy_metrics(db_);
     }
     if (version < kSchemaVersion) {
       execute(kSchema);
@@ -306,6 +355,7 @@ int64_t ResultStore::begin_run(const RunRecord& run) {
     }
     insert.run();
     id = sqlite3_last_insert_rowid(db_);
+    if (run.task) insert_task(db_, id, *run.task);
   });
   return id;
 }
@@ -343,9 +393,14 @@ void ResultStore::insert_trials(int64_t run_id, const std::vector<TrialRecord>& 
 }
 
 void ResultStore::insert_metrics(int64_t run_id, const std::vector<MetricRecord>& metrics) {
-  Statement insert(db_, "INSERT INTO metrics (run_id, name, value) VALUES (?, ?, ?)");
-  for (const auto& metric : metrics)
-    insert.bind(1, run_id).bind(2, metric.name).bind(3, metric.value).run();
+  Statement insert(db_, fmt::format("INSERT INTO metrics (run_id, name, value, {}) VALUES "
+                                    "(?, ?, ?, ?, ?, ?, ?, ?, ?)",
+                                    kDeclarationColumns));
+  for (const auto& metric : metrics) {
+    insert.bind(1, run_id).bind(2, metric.name).bind(3, metric.value);
+    bind_declaration(insert, 4, metric.declaration);
+    insert.run();
+  }
 }
 
 void ResultStore::add_trials(int64_t run_id, const std::vector<TrialRecord>& trials) {
@@ -366,10 +421,17 @@ void ResultStore::complete_run(int64_t run_id, const std::vector<TrialRecord>& t
   });
 }
 
-void ResultStore::end_run(int64_t run_id, const std::string& status, const std::string& reason) {
+void ResultStore::end_run(int64_t run_id, RunStatus status, const std::string& reason) {
+  if (status != RunStatus::failed && status != RunStatus::interrupted) {
+    throw std::invalid_argument("a run ends failed or interrupted, not " + to_string(status));
+  }
   transaction([&] {
     Statement update(db_, "UPDATE runs SET status = ?, finished_at = ?, failure = ? WHERE id = ?");
-    update.bind(1, status).bind(2, utc_timestamp()).bind(3, reason).bind(4, run_id).run();
+    update.bind(1, to_string(status))
+        .bind(2, utc_timestamp())
+        .bind(3, reason)
+        .bind(4, run_id)
+        .run();
   });
 }
 

@@ -4,13 +4,16 @@
 // docs/architecture.md, "Database".
 #pragma once
 
-#include <sqlite3.h>
-
 #include <cstdint>
 #include <functional>
 #include <stdexcept>
 #include <string>
 #include <vector>
+
+#include "store/records.hpp"
+#include "store/run_status.hpp"
+
+struct sqlite3;  // the connection, opaque outside the store (store_access.hpp)
 
 namespace corrmp {
 
@@ -20,39 +23,10 @@ class StoreError : public std::runtime_error {
   using std::runtime_error::runtime_error;
 };
 
-struct RunRecord {
-  std::string experiment;
-  std::string config;  // resolved YAML
-  std::string config_hash;
-  uint64_t seed = 0;
-  std::string git_commit;
-  bool git_dirty = false;
-  std::string out_dir;
-  // Set for a run of a sweep: the sweep, the job's index and its axis values
-  // (a JSON object, key -> value as written).
-  std::string sweep_id;
-  int job_index = 0;
-  std::string axes;
-};
-
-struct TrialRecord {
-  int trial = 0;
-  std::string scenario;  // JSON
-  std::string expected_action;
-  std::string chosen_action;
-  bool success = false;
-  std::string failure;  // empty on success
-  std::string details;  // JSON: the trial's contexts and the task's outcome values
-};
-
-struct MetricRecord {
-  std::string name;
-  double value = 0.0;
-};
-
 class ResultStore {
  public:
-  static constexpr int kSchemaVersion = 3;  // 2: trials.details; 3: runs' uid and sweep
+  // 2: trials.details; 3: runs' uid and sweep; 4: metric declarations and run_tasks
+  static constexpr int kSchemaVersion = 4;
 
   // Opens (creating the file and its folder if needed) and migrates the schema.
   // An existing 0-byte file becomes a new database with a one-line warning.
@@ -78,30 +52,29 @@ class ResultStore {
   // whose process is alive on this host (the job started twice at once); returns them.
   std::vector<InterruptedRun> mark_job_runs_interrupted(const std::string& sweep_id, int job_index);
 
-  // Inserts a run with status 'running' and returns its id.
+  // Inserts a run with status 'running' (and its task declaration, if any) and returns its id.
   int64_t begin_run(const RunRecord& run);
   void set_out_dir(int64_t run_id, const std::string& out_dir);
   // Writes the run's trials and metrics and marks it completed, in one transaction.
   void complete_run(int64_t run_id, const std::vector<TrialRecord>& trials,
                     const std::vector<MetricRecord>& metrics);
-  // Marks the run 'failed' or 'interrupted' with a reason.
-  void end_run(int64_t run_id, const std::string& status, const std::string& reason);
+  // Marks the run failed or interrupted with a reason; throws std::invalid_argument for another
+  // status.
+  void end_run(int64_t run_id, RunStatus status, const std::string& reason);
 
   void add_trials(int64_t run_id, const std::vector<TrialRecord>& trials);
   void add_metrics(int64_t run_id, const std::vector<MetricRecord>& metrics);
 
   // Runs `body` inside BEGIN IMMEDIATE ... COMMIT; rolls back if it throws.
   void transaction(const std::function<void()>& body);
-  // Executes SQL without results (outside or inside a transaction).
-  void execute(const std::string& sql);
-  // The first column of the first row of a query, as text ("" when no row).
-  std::string query_text(const std::string& sql);
-  int64_t query_int(const std::string& sql);
 
   const std::string& path() const { return path_; }
-  sqlite3* handle() { return db_; }
 
  private:
+  friend class StoreAccess;  // the store's own query files
+  // Executes SQL without results (outside or inside a transaction).
+  void execute(const std::string& sql);
+  int64_t query_int(const std::string& sql);
   void migrate(bool existed_empty);
   void insert_trials(int64_t run_id, const std::vector<TrialRecord>& trials);
   void insert_metrics(int64_t run_id, const std::vector<MetricRecord>& metrics);
@@ -113,5 +86,6 @@ class ResultStore {
 
 std::string utc_timestamp();  // ISO 8601, e.g. 2026-11-22T02:24:37Z
 std::string host_name();
+std::string sqlite_library_version();  // of the SQLite the store runs on, e.g. "3.40.1"
 
 }  // namespace corrmp

@@ -18,7 +18,8 @@ namespace {
 namespace fs = std::filesystem;
 
 // The columns of the first schema, which every version since has; later versions added
-// trials.details (2) and the runs' uid, sweep_id, job_index and axes (3).
+// trials.details (2), the runs' uid, sweep_id, job_index and axes (3), and the metrics'
+// declarations and the run_tasks table (4).
 const std::vector<std::pair<std::string, std::vector<std::string>>> kFirstColumns = {
     {"runs",
      {"id", "experiment", "config", "config_hash", "seed", "status", "started_at", "finished_at",
@@ -99,7 +100,7 @@ void ShardReader::read_schema() {
     Statement columns(db_,
                       "SELECT m.name, p.name FROM sqlite_master m, pragma_table_info(m.name) p "
                       "WHERE m.type = 'table' AND m.name IN ('runs', 'trials', 'metrics', "
-                      "'sweeps')");
+                      "'sweeps', 'run_tasks')");
     while (columns.step()) columns_[columns.column_text(0)].insert(columns.column_text(1));
   } catch (const StoreError&) {
     read_failed();

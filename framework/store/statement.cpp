@@ -70,6 +70,10 @@ int64_t Statement::column_int(int index) const { return sqlite3_column_int64(stm
 
 double Statement::column_double(int index) const { return sqlite3_column_double(stmt_, index); }
 
+bool Statement::column_is_null(int index) const {
+  return sqlite3_column_type(stmt_, index) == SQLITE_NULL;
+}
+
 std::string Statement::column_text(int index) const {
   const auto* text = sqlite3_column_text(stmt_, index);
   return text == nullptr ? std::string() : std::string(reinterpret_cast<const char*>(text));

@@ -1,4 +1,4 @@
-// A prepared SQLite statement with RAII finalisation and typed binding.
+// Store-internal: a prepared SQLite statement with RAII finalisation and typed binding.
 #pragma once
 
 #include <sqlite3.h>
@@ -32,6 +32,7 @@ class Statement {
   int64_t column_int(int index) const;
   double column_double(int index) const;
   std::string column_text(int index) const;
+  bool column_is_null(int index) const;
 
  private:
   void check(int code, const char* what) const;

@@ -5,11 +5,16 @@
 #include <fmt/ranges.h>
 
 #include <algorithm>
+#include <memory>
 
 #include "core/path_checks.hpp"
+#include "store/legacy_metrics.hpp"
+#include "store/metric_rows.hpp"
 #include "store/run_uid.hpp"
 #include "store/shard_reader.hpp"
 #include "store/statement.hpp"
+#include "store/store_access.hpp"
+#include "store/task_rows.hpp"
 
 namespace corrmp {
 
@@ -22,7 +27,7 @@ const std::vector<std::string> kRunColumns = {
     "failure",     "sweep_id",   "job_index",   "axes"};
 const std::vector<std::string> kTrialColumns = {
     "trial", "scenario", "expected_action", "chosen_action", "success", "failure", "details"};
-const std::vector<std::string> kMetricColumns = {"name", "value"};
+const std::vector<std::string> kMetricColumns = {"name", "value"};  // then the declaration
 const std::vector<std::string> kSweepColumns = {"id", "name", "created_at", "jobs", "manifest"};
 
 // The shard's columns for a SELECT list, NULL for those its (older) schema lacks.
@@ -45,10 +50,11 @@ std::string insert_sql(const std::string& table, const std::vector<std::string>&
 }
 
 MergeCounts copy_shard(ResultStore& target, ShardReader& shard) {
+  sqlite3* db = StoreAccess::connection(target);
   if (shard.has_table("sweeps")) {
     ShardQuery sweeps(shard,
                       "SELECT " + select_list(shard, "sweeps", kSweepColumns) + " FROM sweeps");
-    Statement insert(target.handle(),
+    Statement insert(db,
                      "INSERT OR IGNORE INTO sweeps (id, name, created_at, jobs, manifest) VALUES "
                      "(?, ?, ?, ?, ?)");
     while (sweeps.step()) {
@@ -69,14 +75,27 @@ MergeCounts copy_shard(ResultStore& target, ShardReader& shard) {
     identity.push_back(column == "id" ? 0 : at(column));
   ShardQuery trials(shard, fmt::format("SELECT {} FROM trials WHERE run_id = ? ORDER BY rowid",
                                        select_list(shard, "trials", kTrialColumns)));
-  ShardQuery metrics(shard, fmt::format("SELECT {} FROM metrics WHERE run_id = ? ORDER BY rowid",
-                                        select_list(shard, "metrics", kMetricColumns)));
-  Statement present(target.handle(), "SELECT count(*) FROM runs WHERE uid = ?");
+  // A shard written before metrics were declared gets the declarations a migration gives them.
+  const bool declared = shard.column_or_null("metrics", "unit") != "NULL";
+  ShardQuery metrics(
+      shard, fmt::format("SELECT {}{}{} FROM metrics WHERE run_id = ? ORDER BY rowid",
+                         select_list(shard, "metrics", kMetricColumns), declared ? ", " : "",
+                         declared ? kDeclarationColumns : ""));
+  std::unique_ptr<ShardQuery> task;  // the run's task declaration (none in an older shard)
+  if (shard.has_table("run_tasks")) {
+    task = std::make_unique<ShardQuery>(shard,
+                                        fmt::format("SELECT {} FROM run_tasks WHERE run_id = ?",
+                                                    select_list(shard, "run_tasks", kTaskColumns)));
+  }
+  Statement present(db, "SELECT count(*) FROM runs WHERE uid = ?");
   std::vector<std::string> run_columns = kRunColumns;
   run_columns.push_back("uid");
-  Statement copy_run(target.handle(), insert_sql("runs", run_columns));
-  Statement copy_trial(target.handle(), insert_sql("trials", kTrialColumns, "run_id"));
-  Statement copy_metric(target.handle(), insert_sql("metrics", kMetricColumns, "run_id"));
+  Statement copy_run(db, insert_sql("runs", run_columns));
+  Statement copy_trial(db, insert_sql("trials", kTrialColumns, "run_id"));
+  Statement copy_metric(db, fmt::format("INSERT INTO metrics (run_id, name, value, {}) VALUES "
+                                        "(?, ?, ?, ?, ?, ?, ?, ?, ?)",
+                                        kDeclarationColumns));
+  Statement copy_task(db, insert_sql("run_tasks", kTaskColumns, "run_id"));
 
   MergeCounts counts;
   while (runs.step()) {
@@ -103,7 +122,7 @@ MergeCounts copy_shard(ResultStore& target, ShardReader& shard) {
       copy_run.bind_column(static_cast<int>(i) + 1, run, static_cast<int>(i) + 2);
     }
     copy_run.bind(static_cast<int>(kRunColumns.size()) + 1, uid).run();
-    const int64_t new_id = sqlite3_last_insert_rowid(target.handle());
+    const int64_t new_id = sqlite3_last_insert_rowid(db);
     const int64_t old_id = run.column_int(0);
     trials.bind(1, old_id);
     while (trials.step()) {
@@ -116,13 +135,29 @@ MergeCounts copy_shard(ResultStore& target, ShardReader& shard) {
     trials.reset();
     metrics.bind(1, old_id);
     while (metrics.step()) {
-      copy_metric.bind(1, new_id);
-      for (size_t i = 0; i < kMetricColumns.size(); ++i) {
-        copy_metric.bind_column(static_cast<int>(i) + 2, metrics.row(), static_cast<int>(i));
+      const Statement& metric = metrics.row();
+      copy_metric.bind(1, new_id).bind_column(2, metric, 0).bind_column(3, metric, 1);
+      if (declared) {
+        for (int i = 0; i < kDeclarationColumnCount; ++i) {
+          copy_metric.bind_column(4 + i, metric, 2 + i);
+        }
+      } else {
+        bind_declaration(copy_metric, 4, inferred_declaration(metric.column_text(0)));
       }
       copy_metric.run();
     }
     metrics.reset();
+    if (task) {
+      task->bind(1, old_id);
+      if (task->step()) {
+        copy_task.bind(1, new_id);
+        for (size_t i = 0; i < kTaskColumns.size(); ++i) {
+          copy_task.bind_column(static_cast<int>(i) + 2, task->row(), static_cast<int>(i));
+        }
+        copy_task.run();
+      }
+      task->reset();
+    }
     ++counts.added;
   }
   return counts;
@@ -138,7 +173,7 @@ void refuse_the_target(const std::string& shard, const std::string& target_path)
 // `message` of an error of `target` without the target's name in front, as the target's own
 // calls give it (its path) or its statements do (SQLite's name for the file).
 std::string without_target_name(ResultStore& target, const std::string& message) {
-  const char* file = sqlite3_db_filename(target.handle(), "main");
+  const char* file = sqlite3_db_filename(StoreAccess::connection(target), "main");
   for (const std::string& name : {target.path(), std::string(file != nullptr ? file : "")}) {
     if (!name.empty() && message.rfind(name + ": ", 0) == 0) return message.substr(name.size() + 2);
   }

@@ -223,8 +223,8 @@ int run_sweep_job(const std::string& manifest, int index, const RunOptions& opti
   run.job_index = index;
   run.axes_json = axes_json(job);
   const RunResult result = run_pipeline(experiment, run);
-  if (result.status == "completed") return 0;
-  return result.status == "interrupted" ? 130 : 1;
+  if (result.status == RunStatus::completed) return 0;
+  return result.status == RunStatus::interrupted ? 130 : 1;
 }
 
 }  // namespace corrmp

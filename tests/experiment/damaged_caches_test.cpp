@@ -164,8 +164,7 @@ std::string cached_model(const std::string& folder) {
 }
 
 // Fits a fresh extractor (same seed, same random stream) and returns its metrics.
-std::vector<std::pair<std::string, double>> fit(const std::string& cache_folder,
-                                                bool reuse = true) {
+std::vector<Metric> fit(const std::string& cache_folder, bool reuse = true) {
   AutoencoderContext context(tiny_autoencoder(), 7);
   Rng rng(11);
   context.fit(demonstrations_with_images(), {cache_folder, "key", reuse}, rng);

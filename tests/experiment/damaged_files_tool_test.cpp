@@ -13,8 +13,9 @@
 #include <string>
 #include <vector>
 
-#include "support/report_tool.hpp"
 #include "store/result_store.hpp"
+#include "support/report_tool.hpp"
+#include "support/store_sql.hpp"
 
 namespace corrmp {
 namespace {
@@ -86,7 +87,7 @@ TEST(DamagedFilesTools, AZeroByteDatabaseIsUsedAsNewWithANotice) {
             std::string::npos)
       << run.err;
   ResultStore store(db);
-  EXPECT_EQ(store.query_int("SELECT COUNT(*) FROM runs WHERE status = 'completed'"), 1);
+  EXPECT_EQ(testing::query_int(store, "SELECT COUNT(*) FROM runs WHERE status = 'completed'"), 1);
 }
 
 // The cache path taken by a directory: each run reports it and collects the
@@ -116,10 +117,12 @@ TEST(DamagedFilesTools, ADirectoryInPlaceOfTheDemonstrationCacheIsNeverFatal) {
   }
   ResultStore store(dir.file("r.sqlite"));
   for (int run_id : {2, 3}) {
-    EXPECT_EQ(store.query_int("SELECT COUNT(*) FROM (SELECT name, value FROM metrics WHERE "
-                              "run_id = 1 EXCEPT SELECT name, value FROM metrics WHERE run_id = " +
-                              std::to_string(run_id) + ")"),
-              0);
+    EXPECT_EQ(
+        testing::query_int(store,
+                           "SELECT COUNT(*) FROM (SELECT name, value FROM metrics WHERE "
+                           "run_id = 1 EXCEPT SELECT name, value FROM metrics WHERE run_id = " +
+                               std::to_string(run_id) + ")"),
+        0);
   }
 }
 
@@ -136,7 +139,7 @@ void expect_no_run(const TempDir& dir, const Outcome& outcome, const std::string
   EXPECT_NE(outcome.err.find(message), std::string::npos) << outcome.err;
   if (fs::exists(dir.file("r.sqlite"))) {
     ResultStore store(dir.file("r.sqlite"));
-    EXPECT_EQ(store.query_int("SELECT count(*) FROM runs"), 0);
+    EXPECT_EQ(testing::query_int(store, "SELECT count(*) FROM runs"), 0);
   }
 }
 
@@ -215,8 +218,8 @@ TEST(DamagedFilesTools, DemonstrationFilesWithBadContentsAreRefusedBeforeARunIsR
       dir.write("files.yaml", trajectory_files_config(dir.file("good"), "x", "c")) + " --quiet");
   ASSERT_EQ(good.exit_code, 0) << good.err;
   ResultStore store(dir.file("r.sqlite"));
-  EXPECT_EQ(store.query_int("SELECT count(*) FROM runs"), 1);
-  EXPECT_EQ(store.query_int("SELECT count(*) FROM runs WHERE status = 'completed'"), 1);
+  EXPECT_EQ(testing::query_int(store, "SELECT count(*) FROM runs"), 1);
+  EXPECT_EQ(testing::query_int(store, "SELECT count(*) FROM runs WHERE status = 'completed'"), 1);
 }
 
 // report only reads: a 0-byte database (what `touch` leaves) is named as empty, with the exit

@@ -15,6 +15,7 @@
 #include "experiment/interrupted_runs.hpp"
 #include "store/result_store.hpp"
 #include "support/child_process.hpp"
+#include "support/store_sql.hpp"
 
 namespace corrmp {
 namespace {
@@ -49,8 +50,8 @@ TEST(InterruptedRun, CtrlCRecordsTheRunAsInterruptedAndExits130) {
   ASSERT_TRUE(WIFEXITED(status));
   EXPECT_EQ(WEXITSTATUS(status), 130);
   ResultStore store(dir.file("r.sqlite"));
-  EXPECT_EQ(store.query_int("SELECT count(*) FROM runs"), 1);
-  EXPECT_EQ(store.query_text("SELECT status FROM runs"), "interrupted");
+  EXPECT_EQ(testing::query_int(store, "SELECT count(*) FROM runs"), 1);
+  EXPECT_EQ(testing::query_text(store, "SELECT status FROM runs"), "interrupted");
 }
 
 TEST(InterruptedRun, AKilledRunIsMarkedInterruptedInTheDatabaseAndItsRunJson) {
@@ -71,11 +72,11 @@ TEST(InterruptedRun, AKilledRunIsMarkedInterruptedInTheDatabaseAndItsRunJson) {
 
   ResultStore store(dir.file("r.sqlite"));
   EXPECT_EQ(mark_interrupted_runs(store), 1);
-  EXPECT_EQ(store.query_text("SELECT status FROM runs"), "interrupted");
+  EXPECT_EQ(testing::query_text(store, "SELECT status FROM runs"), "interrupted");
   const std::string json = read_text(run_json);
   EXPECT_NE(json.find("\n  \"status\": \"interrupted\",\n"), std::string::npos) << json;
-  EXPECT_NE(json.find("\n  \"finished_at\": \"" + store.query_text("SELECT finished_at FROM runs") +
-                      "\",\n"),
+  EXPECT_NE(json.find("\n  \"finished_at\": \"" +
+                      testing::query_text(store, "SELECT finished_at FROM runs") + "\",\n"),
             std::string::npos)
       << json;
   EXPECT_NE(json.find("\n  \"failure\": \"the process running it ended without finishing\",\n"),

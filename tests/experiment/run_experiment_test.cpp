@@ -10,6 +10,7 @@
 #include "experiment/registries.hpp"
 #include "store/result_store.hpp"
 #include "support/report_tool.hpp"
+#include "support/store_sql.hpp"
 
 namespace corrmp {
 namespace {
@@ -220,17 +221,19 @@ TEST(RunExperiment, ARunIsRecordedWithItsDirectoryAndIsDeterministic) {
   ASSERT_EQ(second.exit_code, 0) << second.err;
 
   ResultStore store(dir.file("r.sqlite"));
-  EXPECT_EQ(store.query_int("SELECT COUNT(*) FROM runs WHERE status = 'completed'"), 2);
-  EXPECT_EQ(store.query_text("SELECT value FROM metrics WHERE run_id = 1 AND name = "
-                             "'demonstrations_train'"),
+  EXPECT_EQ(testing::query_int(store, "SELECT COUNT(*) FROM runs WHERE status = 'completed'"), 2);
+  EXPECT_EQ(testing::query_text(store,
+                                "SELECT value FROM metrics WHERE run_id = 1 AND name = "
+                                "'demonstrations_train'"),
             "4.0");
   EXPECT_EQ(
-      store.query_int("SELECT COUNT(*) FROM (SELECT name, value FROM metrics WHERE run_id = 1 "
-                      "EXCEPT SELECT name, value FROM metrics WHERE run_id = 2)"),
+      testing::query_int(store,
+                         "SELECT COUNT(*) FROM (SELECT name, value FROM metrics WHERE run_id = 1 "
+                         "EXCEPT SELECT name, value FROM metrics WHERE run_id = 2)"),
       0);
-  EXPECT_EQ(store.query_text("SELECT config_hash FROM runs WHERE id = 1"),
-            store.query_text("SELECT config_hash FROM runs WHERE id = 2"));
-  const std::string run_dir = store.query_text("SELECT out_dir FROM runs WHERE id = 1");
+  EXPECT_EQ(testing::query_text(store, "SELECT config_hash FROM runs WHERE id = 1"),
+            testing::query_text(store, "SELECT config_hash FROM runs WHERE id = 2"));
+  const std::string run_dir = testing::query_text(store, "SELECT out_dir FROM runs WHERE id = 1");
   EXPECT_EQ(run_dir, dir.file("runs/tiny/1"));
   EXPECT_NE(read_file(run_dir + "/config.resolved.yaml").find("time_steps: 10"), std::string::npos);
   const std::string run_json = read_file(run_dir + "/run.json");
@@ -243,13 +246,14 @@ TEST(RunExperiment, ARunIsRecordedWithItsDirectoryAndIsDeterministic) {
   EXPECT_NE(
       read_file(run_dir + "/predictions/full.csv").find("demonstration,step,x0,y0,mean0,std0"),
       std::string::npos);
-  const std::string error_mean =
-      store.query_text("SELECT value FROM metrics WHERE run_id = 1 AND name = 'full_error_mean'");
+  const std::string error_mean = testing::query_text(
+      store, "SELECT value FROM metrics WHERE run_id = 1 AND name = 'full_error_mean'");
   ASSERT_FALSE(error_mean.empty());
   EXPECT_GT(std::stod(error_mean), 0.0);
   EXPECT_LE(std::stod(error_mean),
-            std::stod(store.query_text("SELECT value FROM metrics WHERE run_id = 1 AND name = "
-                                       "'full_error_max'")));
+            std::stod(testing::query_text(store,
+                                          "SELECT value FROM metrics WHERE run_id = 1 AND name = "
+                                          "'full_error_max'")));
 }
 
 TEST(RunExperiment, ATinyCorridorRunRecordsTrialsAndThePapersMetrics) {
@@ -269,40 +273,46 @@ TEST(RunExperiment, ATinyCorridorRunRecordsTrialsAndThePapersMetrics) {
   ResultStore store(dir.file("r.sqlite"));
   for (int run_id : {1, 2}) {
     const std::string where = " WHERE run_id = " + std::to_string(run_id);
-    EXPECT_EQ(store.query_int("SELECT COUNT(*) FROM trials" + where), 3);
-    EXPECT_EQ(store.query_int("SELECT COUNT(*) FROM trials" + where +
-                              " AND expected_action IN ('push', 'pull', 'none') AND chosen_action "
-                              "IN ('push', 'pull', 'none') AND scenario LIKE "
-                              "'%corridor_offset%' AND (success = 1 OR failure <> '')"),
+    EXPECT_EQ(testing::query_int(store, "SELECT COUNT(*) FROM trials" + where), 3);
+    EXPECT_EQ(testing::query_int(
+                  store, "SELECT COUNT(*) FROM trials" + where +
+                             " AND expected_action IN ('push', 'pull', 'none') AND chosen_action "
+                             "IN ('push', 'pull', 'none') AND scenario LIKE "
+                             "'%corridor_offset%' AND (success = 1 OR failure <> '')"),
               3);
     auto metric = [&](const std::string& name) {
-      const std::string text =
-          store.query_text("SELECT value FROM metrics" + where + " AND name = '" + name + "'");
+      const std::string text = testing::query_text(
+          store, "SELECT value FROM metrics" + where + " AND name = '" + name + "'");
       EXPECT_FALSE(text.empty()) << name;
       return text.empty() ? -1.0 : std::stod(text);
     };
     const double success = metric("task_success_rate");
     EXPECT_GE(success, 0.0);
     EXPECT_LE(success, 1.0);
-    EXPECT_DOUBLE_EQ(success * 3, static_cast<double>(
-                                      store.query_int("SELECT SUM(success) FROM trials" + where)));
+    EXPECT_DOUBLE_EQ(success * 3, static_cast<double>(testing::query_int(
+                                      store, "SELECT SUM(success) FROM trials" + where)));
     EXPECT_GE(metric("decision_match_rate"), 0.0);
     EXPECT_GT(metric("cor_mp_error_mean_cm"), 0.0);
     EXPECT_LE(metric("cor_mp_error_mean_cm"), metric("cor_mp_error_max_cm"));
     EXPECT_GT(metric("post_mp_error_mean_cm"), 0.0);
     EXPECT_LE(metric("post_mp_error_mean_cm"), metric("post_mp_error_max_cm"));
   }
-  EXPECT_EQ(store.query_int("SELECT COUNT(*) FROM (SELECT trial, scenario, expected_action, "
-                            "chosen_action, success, failure FROM trials WHERE run_id = 1 EXCEPT "
-                            "SELECT trial, scenario, expected_action, chosen_action, success, "
-                            "failure FROM trials WHERE run_id = 3)"),
-            0);
-  EXPECT_EQ(store.query_int("SELECT COUNT(*) FROM (SELECT name, value FROM metrics WHERE run_id = "
-                            "1 EXCEPT SELECT name, value FROM metrics WHERE run_id = 3)"),
-            0);
-  EXPECT_NE(read_file(store.query_text("SELECT out_dir FROM runs WHERE id = 3") + "/log.txt")
-                .find("reusing cached demonstrations"),
-            std::string::npos);
+  EXPECT_EQ(
+      testing::query_int(store,
+                         "SELECT COUNT(*) FROM (SELECT trial, scenario, expected_action, "
+                         "chosen_action, success, failure FROM trials WHERE run_id = 1 EXCEPT "
+                         "SELECT trial, scenario, expected_action, chosen_action, success, "
+                         "failure FROM trials WHERE run_id = 3)"),
+      0);
+  EXPECT_EQ(
+      testing::query_int(store,
+                         "SELECT COUNT(*) FROM (SELECT name, value FROM metrics WHERE run_id = "
+                         "1 EXCEPT SELECT name, value FROM metrics WHERE run_id = 3)"),
+      0);
+  EXPECT_NE(
+      read_file(testing::query_text(store, "SELECT out_dir FROM runs WHERE id = 3") + "/log.txt")
+          .find("reusing cached demonstrations"),
+      std::string::npos);
 }
 
 TEST(RunExperiment, ATinyAutoencoderRunWritesItsFiguresAndGivesTheSameResultsOnOneOrTwoThreads) {
@@ -317,33 +327,38 @@ TEST(RunExperiment, ATinyAutoencoderRunWritesItsFiguresAndGivesTheSameResultsOnO
   const Outcome first = run(dir, args + " --threads 2");
   ASSERT_EQ(first.exit_code, 0) << first.err;
   ResultStore store(dir.file("r.sqlite"));
-  const std::string run_dir = store.query_text("SELECT out_dir FROM runs WHERE id = 1");
+  const std::string run_dir = testing::query_text(store, "SELECT out_dir FROM runs WHERE id = 1");
   for (const char* file : {"autoencoder.cmpm", "autoencoder_reconstructions.png",
                            "autoencoder_latents.png", "tables.txt"}) {
     EXPECT_TRUE(std::filesystem::exists(run_dir + "/" + file)) << file;
   }
-  const std::string mse = store.query_text(
-      "SELECT value FROM metrics WHERE run_id = 1 AND name = 'autoencoder_test_mse'");
+  const std::string mse = testing::query_text(
+      store, "SELECT value FROM metrics WHERE run_id = 1 AND name = 'autoencoder_test_mse'");
   ASSERT_FALSE(mse.empty());
   EXPECT_GT(std::stod(mse), 0.0);
   EXPECT_LT(std::stod(mse), 0.5);
-  EXPECT_EQ(store.query_int("SELECT COUNT(*) FROM trials WHERE run_id = 1"), 2);
+  EXPECT_EQ(testing::query_int(store, "SELECT COUNT(*) FROM trials WHERE run_id = 1"), 2);
   // A second run reuses the cached autoencoder and reproduces the first.
   const Outcome second = run(dir, args);
   ASSERT_EQ(second.exit_code, 0) << second.err;
-  EXPECT_NE(read_file(store.query_text("SELECT out_dir FROM runs WHERE id = 2") + "/log.txt")
-                .find("reusing the trained autoencoder"),
-            std::string::npos);
-  EXPECT_EQ(store.query_int("SELECT COUNT(*) FROM (SELECT name, value FROM metrics WHERE run_id = "
-                            "1 EXCEPT SELECT name, value FROM metrics WHERE run_id = 2)"),
-            0);
+  EXPECT_NE(
+      read_file(testing::query_text(store, "SELECT out_dir FROM runs WHERE id = 2") + "/log.txt")
+          .find("reusing the trained autoencoder"),
+      std::string::npos);
+  EXPECT_EQ(
+      testing::query_int(store,
+                         "SELECT COUNT(*) FROM (SELECT name, value FROM metrics WHERE run_id = "
+                         "1 EXCEPT SELECT name, value FROM metrics WHERE run_id = 2)"),
+      0);
   // One thread, everything trained afresh one after another: the same results.
   const Outcome third = run(dir, args + " --threads 1 --no-cache");
   ASSERT_EQ(third.exit_code, 0) << third.err;
-  EXPECT_EQ(store.query_int("SELECT COUNT(*) FROM (SELECT name, value FROM metrics WHERE run_id = "
-                            "1 EXCEPT SELECT name, value FROM metrics WHERE run_id = 3)"),
-            0);
-  EXPECT_GT(store.query_int("SELECT COUNT(*) FROM metrics WHERE run_id = 3"), 10);
+  EXPECT_EQ(
+      testing::query_int(store,
+                         "SELECT COUNT(*) FROM (SELECT name, value FROM metrics WHERE run_id = "
+                         "1 EXCEPT SELECT name, value FROM metrics WHERE run_id = 3)"),
+      0);
+  EXPECT_GT(testing::query_int(store, "SELECT COUNT(*) FROM metrics WHERE run_id = 3"), 10);
 }
 
 // A cache file that cannot be read is reported and collected again;
@@ -369,14 +384,17 @@ TEST(RunExperiment, AnUnreadableCacheIsCollectedAgain) {
   const Outcome third = run(dir, args + " --no-cache");
   ASSERT_EQ(third.exit_code, 0) << third.err;
   ResultStore store(dir.file("r.sqlite"));
-  EXPECT_EQ(read_file(store.query_text("SELECT out_dir FROM runs WHERE id = 3") + "/log.txt")
-                .find("reusing cached demonstrations"),
-            std::string::npos);
+  EXPECT_EQ(
+      read_file(testing::query_text(store, "SELECT out_dir FROM runs WHERE id = 3") + "/log.txt")
+          .find("reusing cached demonstrations"),
+      std::string::npos);
   for (int run_id : {2, 3}) {
-    EXPECT_EQ(store.query_int("SELECT COUNT(*) FROM (SELECT name, value FROM metrics WHERE "
-                              "run_id = 1 EXCEPT SELECT name, value FROM metrics WHERE run_id = " +
-                              std::to_string(run_id) + ")"),
-              0);
+    EXPECT_EQ(
+        testing::query_int(store,
+                           "SELECT COUNT(*) FROM (SELECT name, value FROM metrics WHERE "
+                           "run_id = 1 EXCEPT SELECT name, value FROM metrics WHERE run_id = " +
+                               std::to_string(run_id) + ")"),
+        0);
   }
 }
 
@@ -394,21 +412,23 @@ TEST(RunExperiment, ATinyRopeRunRecordsKnotOutcomesAndContexts) {
   EXPECT_NE(outcome.out.find("knot"), std::string::npos) << outcome.out;
   ResultStore store(dir.file("r.sqlite"));
   EXPECT_EQ(
-      store.query_int("SELECT COUNT(*) FROM trials WHERE run_id = 1 AND details LIKE "
-                      "'%\"contexts\":{\"cor\":[%' AND details LIKE '%critical_end_dx%' "
-                      "AND scenario LIKE '%grasp_offset%' AND (success = 1 OR failure <> '')"),
+      testing::query_int(store,
+                         "SELECT COUNT(*) FROM trials WHERE run_id = 1 AND details LIKE "
+                         "'%\"contexts\":{\"cor\":[%' AND details LIKE '%critical_end_dx%' "
+                         "AND scenario LIKE '%grasp_offset%' AND (success = 1 OR failure <> '')"),
       2);
   for (const char* name :
        {"task_success_rate", "knot_rate", "enclosed_rate", "demonstrations_context_error_median_mm",
         "context_found_rate", "demonstrations_context_found_rate", "cor_mp_error_mean_cm",
         "failures_missed_enclose"}) {
-    EXPECT_FALSE(store
-                     .query_text("SELECT value FROM metrics WHERE run_id = 1 AND name = '" +
-                                 std::string(name) + "'")
+    EXPECT_FALSE(testing::query_text(store,
+                                     "SELECT value FROM metrics WHERE run_id = 1 AND "
+                                     "name = '" +
+                                         std::string(name) + "'")
                      .empty())
         << name;
   }
-  const std::string run_dir = store.query_text("SELECT out_dir FROM runs WHERE id = 1");
+  const std::string run_dir = testing::query_text(store, "SELECT out_dir FROM runs WHERE id = 1");
   for (const char* file : {"knotting.png", "segmentation_0.png", "trajectories.png",
                            "trajectories.csv", "tables.txt", "models/cor.cnmp"}) {
     EXPECT_TRUE(std::filesystem::exists(run_dir + "/" + file)) << file;

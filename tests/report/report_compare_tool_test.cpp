@@ -11,6 +11,7 @@
 #include "config/test_files.hpp"
 #include "support/recorded_runs.hpp"
 #include "support/report_tool.hpp"
+#include "support/store_sql.hpp"
 
 namespace corrmp {
 namespace {
@@ -165,7 +166,8 @@ TEST(ReportTool, SaysWhatIsWrongWithACompareInOneLine) {
   // A database written before sweeps were recorded.
   {
     ResultStore store(dir.file("r.sqlite"));
-    store.execute(
+    testing::execute_sql(
+        store,
         "DROP INDEX IF EXISTS runs_sweep; ALTER TABLE runs DROP COLUMN axes; ALTER TABLE runs "
         "DROP COLUMN job_index; ALTER TABLE runs DROP COLUMN sweep_id; DROP TABLE sweeps;");
   }
@@ -207,9 +209,9 @@ TEST(ReportTool, NoCompletedRunSaysHowManyFailedAndWhichOptionShowsThem) {
     run.experiment = "curves_demo";
     run.config = "seed: 0\n";
     run.config_hash = "h";
-    store.end_run(store.begin_run(run), "failed", "std::bad_alloc");
-    store.end_run(store.begin_run(run), "failed", "std::bad_alloc");
-    store.end_run(store.begin_run(run), "interrupted", "Ctrl-C");
+    store.end_run(store.begin_run(run), RunStatus::failed, "std::bad_alloc");
+    store.end_run(store.begin_run(run), RunStatus::failed, "std::bad_alloc");
+    store.end_run(store.begin_run(run), RunStatus::interrupted, "Ctrl-C");
   }
   const std::string db = dir.file("r.sqlite");
   const ToolOutcome table = report_tool(dir, "");

@@ -290,6 +290,7 @@ RunSummary summary_of(int64_t id, const std::string& experiment,
   run.successes = static_cast<int>(4 * success);
   run.metrics = {{"task_success_rate", success}};
   run.metric_order = {"task_success_rate"};
+  testing::declare_as_migrated(run);
   return run;
 }
 
@@ -305,6 +306,7 @@ TEST(RunComparison, ClipsIntervalsToTheValuesAMetricCanTake) {
     runs[i].metrics["cor_mp_error_mean_cm"] = values[i % 2].first;
     runs[i].metrics["offset_x"] = values[i % 2].second;
     runs[i].metric_order.push_back("cor_mp_error_mean_cm");
+    testing::declare_as_migrated(runs[i]);
   }
   ComparisonOptions options;
   options.extra_metrics = {"offset_x"};

@@ -9,6 +9,7 @@
 #include <sstream>
 
 #include "config/test_files.hpp"
+#include "support/recorded_runs.hpp"
 
 namespace corrmp {
 namespace {
@@ -21,11 +22,11 @@ int64_t add_run(ResultStore& store, const std::string& experiment, const std::st
   std::vector<TrialRecord> trials;
   for (int t = 0; t < 4; ++t) trials.push_back({t, "{}", "push", "push", t < 4 * success, "", ""});
   store.complete_run(id, trials,
-                     {{"task_success_rate", success},
-                      {"decision_match_rate", 0.75},
-                      {"cor_mp_error_mean_cm", cor_error},
-                      {"cor_mp_error_max_cm", 2 * cor_error},
-                      {"demonstrations_train", 100}});
+                     testing::as_migrated({{"task_success_rate", success},
+                                           {"decision_match_rate", 0.75},
+                                           {"cor_mp_error_mean_cm", cor_error},
+                                           {"cor_mp_error_max_cm", 2 * cor_error},
+                                           {"demonstrations_train", 100}}));
   return id;
 }
 
@@ -37,11 +38,11 @@ TEST(RunReport, ErrorColumnsFollowWhatTheRunsRecorded) {
   add_run(store, "corridor_pc", "seed: 0\n", 1.0, 0.2);
   const int64_t id = store.begin_run({"rope", "seed: 0\n", "hash", 0, "", false, "", "", 0, ""});
   store.complete_run(id, {},
-                     {{"task_success_rate", 0.5},
-                      {"pre_mp_error_mean_mm", 3.0},
-                      {"pre_mp_error_max_mm", 4.0},
-                      {"cor_mp_error_mean_cm", 0.5},
-                      {"cor_mp_error_max_cm", 0.7}});
+                     testing::as_migrated({{"task_success_rate", 0.5},
+                                           {"pre_mp_error_mean_mm", 3.0},
+                                           {"pre_mp_error_max_mm", 4.0},
+                                           {"cor_mp_error_mean_cm", 0.5},
+                                           {"cor_mp_error_max_cm", 0.7}}));
   const auto runs = load_run_summaries(store, {});
   const std::string markdown = report_markdown(runs, {});
   EXPECT_NE(markdown.find("| decision match | cor-MP error mean / max (cm) | pre-MP error mean / "
@@ -64,7 +65,8 @@ TEST(RunReport, HeldOutErrorsOfRunsWithoutAnEnvironmentGetColumns) {
   ResultStore store(dir.file("r.sqlite"));
   const int64_t id =
       store.begin_run({"curves_demo", "seed: 0\n", "hash", 0, "", false, "", "", 0, ""});
-  store.complete_run(id, {}, {{"full_error_mean", 0.00412}, {"full_error_max", 0.0183}});
+  store.complete_run(
+      id, {}, testing::as_migrated({{"full_error_mean", 0.00412}, {"full_error_max", 0.0183}}));
   const auto runs = load_run_summaries(store, {});
   const std::string markdown = report_markdown(runs, {});
   EXPECT_NE(markdown.find("| full error mean / max (held-out) |"), std::string::npos) << markdown;
@@ -94,7 +96,7 @@ TEST(RunReport, TabulatesRunsWithTheSettingsTheyVary) {
   add_run(store, "other", "seed: 0\nnote: a|b\n", 0.25, 0.1);
   const int64_t failed =
       store.begin_run({"sweep", "seed: 9\n", "hash", 0, "", false, "", "", 0, ""});
-  store.end_run(failed, "failed", "for the test");
+  store.end_run(failed, RunStatus::failed, "for the test");
 
   const auto runs = load_run_summaries(store, {});
   ASSERT_EQ(runs.size(), 4u);
@@ -130,7 +132,7 @@ TEST(RunReport, TabulatesRunsWithTheSettingsTheyVary) {
   query.completed_only = false;
   const auto with_failed = load_run_summaries(store, query);
   ASSERT_EQ(with_failed.size(), 3u);
-  EXPECT_EQ(with_failed[2].status, "failed");
+  EXPECT_EQ(with_failed[2].status, RunStatus::failed);
   // With --all the Markdown shows each run's status; by default it has none.
   EXPECT_EQ(markdown.find("status"), std::string::npos) << markdown;
   ReportFormat with_status;
@@ -208,7 +210,7 @@ TEST(ReportTool, PrintsTheRunsOrSaysWhatIsWrongInOneLine) {
     ResultStore store(dir.file("r.sqlite"));
     const int64_t id =
         store.begin_run({"corridor_mono", "seed: 1\n", "hash", 0, "", false, "", "", 0, ""});
-    store.end_run(id, "interrupted", "killed");
+    store.end_run(id, RunStatus::interrupted, "killed");
   }
   const ToolOutcome all = run_report_tool(dir, "--db " + dir.file("r.sqlite") + " --all");
   EXPECT_EQ(all.exit_code, 0) << all.err;

@@ -5,7 +5,7 @@
 #    its soft body a rope: "rope" is allowed in framework/sim/);
 #  - a task's label: one of LABELS as the whole literal or joined by '_' to a name
 #    (task_success_rate_push); the labels that are also plain words (WORD_LABELS) only as a
-#    metric name's suffix (expected_none);
+#    metric name's suffix after 'expected' or 'rate' (expected_none, task_success_rate_none);
 #  - a task's unit: one of UNITS as a word;
 #  - a figure file: a *.png name a task's folder writes, or any *.png name in framework/report/
 #    (the reports read which figures to show from data).
@@ -101,7 +101,7 @@ find framework \( -name '*.cpp' -o -name '*.hpp' \) -not -path 'framework/envs/*
       for (l = 1; l <= nl; l++)
         if (lower ~ ("(^|_)" label[l] "(_|$)")) why = why " the label \047" label[l] "\047"
       for (x = 1; x <= nx; x++)
-        if (lower ~ ("_" word_label[x] "$")) why = why " the label \047" word_label[x] "\047"
+        if (lower ~ ("(expected|rate)_" word_label[x] "$")) why = why " the label \047" word_label[x] "\047"
       for (f = 1; f <= nf; f++)
         if (index(text, figure[f])) why = why " the task figure \047" figure[f] "\047"
       if (file ~ /^framework\/report\// && text ~ /[A-Za-z0-9_]\.png/) why = why " a figure file"

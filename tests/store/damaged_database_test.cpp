@@ -12,6 +12,7 @@
 #include "config/test_files.hpp"
 #include "log_capture.hpp"
 #include "store/result_store.hpp"
+#include "support/store_sql.hpp"
 
 namespace corrmp {
 namespace {
@@ -58,7 +59,7 @@ TEST(DamagedDatabase, AZeroByteFileBecomesANewDatabaseWithOneNotice) {
   testing::LogCapture log;
   {
     ResultStore store(path);
-    EXPECT_EQ(store.query_int("PRAGMA user_version"), ResultStore::kSchemaVersion);
+    EXPECT_EQ(testing::query_int(store, "PRAGMA user_version"), ResultStore::kSchemaVersion);
     RunRecord run;
     run.experiment = "e";
     EXPECT_GT(store.begin_run(run), 0);
@@ -116,7 +117,7 @@ TEST(DamagedDatabase, EveryStatementErrorNamesTheDatabase) {
   TempDir dir;
   const std::string path = dir.file("r.sqlite");
   ResultStore store(path);
-  EXPECT_THAT([&] { store.query_text("SELECT nothing FROM nowhere"); },
+  EXPECT_THAT([&] { testing::query_text(store, "SELECT nothing FROM nowhere"); },
               ThrowsMessage<StoreError>(StartsWith(fs::canonical(path).string() + ": ")));
 }
 

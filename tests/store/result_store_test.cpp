@@ -8,6 +8,8 @@
 #include <unistd.h>
 
 #include "config/test_files.hpp"
+#include "store/run_queries.hpp"
+#include "support/store_sql.hpp"
 
 namespace corrmp {
 namespace {
@@ -28,10 +30,10 @@ RunRecord a_run() {
 TEST(ResultStore, CreatesTheSchemaInWalModeWithItsVersion) {
   TempDir dir;
   ResultStore store(dir.file("sub/r.sqlite"));
-  EXPECT_EQ(store.query_int("PRAGMA user_version"), ResultStore::kSchemaVersion);
-  EXPECT_EQ(store.query_text("PRAGMA journal_mode"), "wal");
+  EXPECT_EQ(testing::query_int(store, "PRAGMA user_version"), ResultStore::kSchemaVersion);
+  EXPECT_EQ(testing::query_text(store, "PRAGMA journal_mode"), "wal");
   const int64_t id = store.begin_run(a_run());
-  EXPECT_EQ(store.query_text("SELECT status FROM runs WHERE id = " + std::to_string(id)),
+  EXPECT_EQ(testing::query_text(store, "SELECT status FROM runs WHERE id = " + std::to_string(id)),
             "running");
 }
 
@@ -40,7 +42,7 @@ TEST(ResultStore, RefusesANewerSchemaVersion) {
   const std::string path = dir.file("r.sqlite");
   {
     ResultStore store(path);
-    store.execute("PRAGMA user_version = 99");
+    testing::execute_sql(store, "PRAGMA user_version = 99");
   }
   EXPECT_THAT([&] { ResultStore again(path); },
               ThrowsMessage<StoreError>(HasSubstr("schema version 99 is newer")));
@@ -55,11 +57,11 @@ TEST(ResultStore, CompleteRunWritesTrialsMetricsAndStatusTogether) {
                       {1, "{\"x\":2}", "pull", "none", false, "touched the corridor", ""}},
                      {{"task_success_rate", 0.5}});
   const std::string where = " WHERE run_id = " + std::to_string(id);
-  EXPECT_EQ(store.query_int("SELECT COUNT(*) FROM trials" + where), 2);
-  EXPECT_EQ(store.query_text("SELECT failure FROM trials" + where + " AND trial = 1"),
+  EXPECT_EQ(testing::query_int(store, "SELECT COUNT(*) FROM trials" + where), 2);
+  EXPECT_EQ(testing::query_text(store, "SELECT failure FROM trials" + where + " AND trial = 1"),
             "touched the corridor");
-  EXPECT_EQ(store.query_text("SELECT value FROM metrics" + where), "0.5");
-  EXPECT_EQ(store.query_text("SELECT status FROM runs WHERE id = " + std::to_string(id)),
+  EXPECT_EQ(testing::query_text(store, "SELECT value FROM metrics" + where), "0.5");
+  EXPECT_EQ(testing::query_text(store, "SELECT status FROM runs WHERE id = " + std::to_string(id)),
             "completed");
 }
 
@@ -72,11 +74,11 @@ TEST(ResultStore, AFailedTransactionWritesNothing) {
   }),
                StoreError);
   EXPECT_THROW(store.transaction([&] {
-    store.execute("INSERT INTO metrics (run_id, name, value) VALUES (1, 'b', 2)");
+    testing::execute_sql(store, "INSERT INTO metrics (run_id, name, value) VALUES (1, 'b', 2)");
     throw std::runtime_error("stage failed");
   }),
                std::runtime_error);
-  EXPECT_EQ(store.query_int("SELECT COUNT(*) FROM metrics"), 0);
+  EXPECT_EQ(testing::query_int(store, "SELECT COUNT(*) FROM metrics"), 0);
 }
 
 TEST(ResultStore, TwoProcessesWritingOneThousandRowsEachLoseNone) {
@@ -109,9 +111,11 @@ TEST(ResultStore, TwoProcessesWritingOneThousandRowsEachLoseNone) {
   ASSERT_TRUE(WIFEXITED(status));
   EXPECT_EQ(WEXITSTATUS(status), 0);
   ResultStore store(path);
-  EXPECT_EQ(store.query_int("SELECT COUNT(*) FROM metrics WHERE name LIKE 'child_%'"), 1000);
-  EXPECT_EQ(store.query_int("SELECT COUNT(*) FROM metrics WHERE name LIKE 'parent_%'"), 1000);
-  EXPECT_EQ(store.query_int("SELECT COUNT(DISTINCT name) FROM metrics"), 2000);
+  EXPECT_EQ(testing::query_int(store, "SELECT COUNT(*) FROM metrics WHERE name LIKE 'child_%'"),
+            1000);
+  EXPECT_EQ(testing::query_int(store, "SELECT COUNT(*) FROM metrics WHERE name LIKE 'parent_%'"),
+            1000);
+  EXPECT_EQ(testing::query_int(store, "SELECT COUNT(DISTINCT name) FROM metrics"), 2000);
 }
 
 TEST(ResultStore, ARunLeftRunningByAKilledProcessIsMarkedInterrupted) {
@@ -129,9 +133,10 @@ TEST(ResultStore, ARunLeftRunningByAKilledProcessIsMarkedInterrupted) {
   ResultStore store(path);
   const int64_t live = store.begin_run(a_run());  // this process is alive: left alone
   EXPECT_EQ(store.mark_interrupted_runs().size(), 1u);
-  EXPECT_EQ(store.query_int("SELECT COUNT(*) FROM runs WHERE status = 'interrupted'"), 1);
-  EXPECT_EQ(store.query_text("SELECT status FROM runs WHERE id = " + std::to_string(live)),
-            "running");
+  EXPECT_EQ(testing::query_int(store, "SELECT COUNT(*) FROM runs WHERE status = 'interrupted'"), 1);
+  EXPECT_EQ(
+      testing::query_text(store, "SELECT status FROM runs WHERE id = " + std::to_string(live)),
+      "running");
   EXPECT_TRUE(store.mark_interrupted_runs().empty());
 }
 
@@ -160,13 +165,75 @@ TEST(ResultStore, AJobsRunsAreMarkedInterruptedUnlessTheirProcessIsAliveHere) {
   ResultStore store(path);
   const int64_t live = store.begin_run(job);
   const int64_t elsewhere = store.begin_run(job);
-  store.execute("UPDATE runs SET host = 'another-host' WHERE id = " + std::to_string(elsewhere));
+  testing::execute_sql(
+      store, "UPDATE runs SET host = 'another-host' WHERE id = " + std::to_string(elsewhere));
   EXPECT_EQ(store.mark_job_runs_interrupted("s-1", 0).size(), 3u);
   ASSERT_EQ(waitpid(children[1], nullptr, 0), children[1]);
-  EXPECT_EQ(store.query_text("SELECT status FROM runs WHERE id = " + std::to_string(live)),
-            "running");
-  EXPECT_EQ(store.query_text("SELECT status FROM runs WHERE id = " + std::to_string(elsewhere)),
-            "interrupted");
+  EXPECT_EQ(
+      testing::query_text(store, "SELECT status FROM runs WHERE id = " + std::to_string(live)),
+      "running");
+  EXPECT_EQ(
+      testing::query_text(store, "SELECT status FROM runs WHERE id = " + std::to_string(elsewhere)),
+      "interrupted");
+}
+
+// What a metric means is stored with it and read back as declared: a unit, a range with either
+// end open, a direction, and the report heading its statistics share.
+TEST(ResultStore, AMetricsDeclarationIsStoredAndReadBack) {
+  TempDir dir;
+  ResultStore store(dir.file("r.sqlite"));
+  const int64_t id = store.begin_run(a_run());
+  const std::vector<MetricRecord> metrics = {
+      {"task_success_rate", 0.75, rate_metric(Better::higher)},
+      {"reach_mp_error_mean_mm", 3.5, error_statistic("mm", "reach-MP error (mm)", "mean")},
+      {"failures_dropped", 2.0, count_metric(Better::lower)},
+      {"offset", -1.5, MetricDeclaration{}},
+      {"ceiling",
+       0.25,
+       {"s", {-std::numeric_limits<double>::infinity(), 4.0}, Better::lower, "", ""}},
+  };
+  store.complete_run(id, {}, metrics);
+  EXPECT_EQ(run_metrics(store, id), metrics);
+}
+
+// A run stores what its task declared, read back as it was; a run without one has none.
+TEST(ResultStore, ARunsTaskDeclarationIsStoredAndReadBack) {
+  TempDir dir;
+  ResultStore store(dir.file("r.sqlite"));
+  RunRecord run = a_run();
+  TaskDeclaration task;
+  task.trajectory_columns = {"x", "y", "grip \"left\""};
+  task.error_unit = "mm";
+  task.error_scale = 1000.0;
+  task.error_segments = {"reach", "post"};
+  task.error_columns = {0, 1};
+  task.decision_segment = "reach";
+  task.decision_labels = {"b", "a"};
+  task.relative_columns = {1};
+  task.plot_horizontal = 1;
+  task.plot_vertical = 0;
+  task.outcome_metrics = {"touched"};
+  task.failure_categories = {"missed the via point", "dropped"};
+  run.task = task;
+  const int64_t with_task = store.begin_run(run);
+  const int64_t without = store.begin_run(a_run());
+  ASSERT_TRUE(run_task(store, with_task));
+  EXPECT_EQ(*run_task(store, with_task), task);
+  EXPECT_FALSE(run_task(store, without));
+}
+
+// A run ends failed or interrupted; ending it as running or completed is a programming error.
+TEST(ResultStore, ARunEndsFailedOrInterruptedOnly) {
+  TempDir dir;
+  ResultStore store(dir.file("r.sqlite"));
+  const int64_t id = store.begin_run(a_run());
+  EXPECT_THROW(store.end_run(id, RunStatus::completed, "no"), std::invalid_argument);
+  store.end_run(id, RunStatus::interrupted, "Ctrl-C");
+  RunSelection all;
+  all.completed_only = false;
+  const auto runs = select_runs(store, all);
+  ASSERT_EQ(runs.size(), 1u);
+  EXPECT_EQ(runs[0].status, RunStatus::interrupted);
 }
 
 }  // namespace

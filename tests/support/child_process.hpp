@@ -12,6 +12,7 @@
 #include <vector>
 
 #include "store/result_store.hpp"
+#include "support/store_sql.hpp"
 
 namespace corrmp::testing {
 
@@ -42,7 +43,7 @@ inline int64_t wait_until_positive(const std::string& db, const std::string& que
     if (!std::filesystem::exists(db)) continue;
     try {
       ResultStore store(db);
-      value = store.query_int(query);
+      value = testing::query_int(store, query);
     } catch (const StoreError&) {
     }
   }

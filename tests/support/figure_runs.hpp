@@ -18,7 +18,7 @@ inline RunSummary run_of(int64_t id, const std::string& experiment,
   RunSummary run;
   run.id = id;
   run.experiment = experiment;
-  run.status = "completed";
+  run.status = RunStatus::completed;
   run.axes = std::move(axes);
   if (success) run.metrics["task_success_rate"] = *success;
   return run;

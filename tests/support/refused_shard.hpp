@@ -5,12 +5,14 @@
 #include <string>
 
 #include "store/result_store.hpp"
+#include "support/store_sql.hpp"
 
 namespace corrmp::testing {
 
 inline void write_shard_the_target_refuses(const std::string& path) {
   ResultStore store(path);
-  store.execute(
+  testing::execute_sql(
+      store,
       "DROP TABLE trials; DROP TABLE metrics; DROP TABLE runs; "
       "CREATE TABLE runs (id INTEGER PRIMARY KEY, experiment, config, config_hash, seed, "
       "status, started_at, finished_at, git_commit, git_dirty, out_dir, host, pid, failure, "

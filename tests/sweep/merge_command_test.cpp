@@ -13,6 +13,7 @@
 #include "config/test_files.hpp"
 #include "store/result_store.hpp"
 #include "support/refused_shard.hpp"
+#include "support/store_sql.hpp"
 
 namespace corrmp {
 namespace {
@@ -68,7 +69,7 @@ std::string make_shard(const TempDir& dir, const std::string& name, int trials =
 
 int64_t completed_runs(const std::string& db) {
   ResultStore store(db);
-  return store.query_int("SELECT count(*) FROM runs WHERE status = 'completed'");
+  return testing::query_int(store, "SELECT count(*) FROM runs WHERE status = 'completed'");
 }
 
 TEST(MergeCommand, AShardThatIsNotAResultDatabaseMergesNothingAndIsLeftAsItWas) {
@@ -77,7 +78,8 @@ TEST(MergeCommand, AShardThatIsNotAResultDatabaseMergesNothingAndIsLeftAsItWas) 
   const std::string foreign = dir.file("foreign.sqlite");
   {
     ResultStore store(foreign);
-    store.execute(
+    testing::execute_sql(
+        store,
         "DROP TABLE trials; DROP TABLE metrics; DROP TABLE runs; "
         "CREATE TABLE runs (name TEXT); CREATE TABLE trials (x INTEGER); "
         "CREATE TABLE metrics (y REAL); INSERT INTO runs VALUES ('someone else''s');"
@@ -126,7 +128,9 @@ TEST(MergeCommand, ShardsAreOnlyReadNeverChanged) {
   const std::string old = make_shard(dir, "old.sqlite");
   {
     ResultStore store(old);
-    store.execute(
+    testing::downgrade_to_version_3(store);
+    testing::execute_sql(
+        store,
         "DROP INDEX runs_uid; DROP INDEX runs_sweep; DROP TABLE sweeps; "
         "ALTER TABLE runs DROP COLUMN uid; ALTER TABLE runs DROP COLUMN sweep_id; "
         "ALTER TABLE runs DROP COLUMN job_index; ALTER TABLE runs DROP COLUMN axes; "

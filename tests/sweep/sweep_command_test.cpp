@@ -20,6 +20,7 @@
 #include "store/result_store.hpp"
 #include "support/child_process.hpp"
 #include "support/local_slurm.hpp"
+#include "support/store_sql.hpp"
 #include "sweep/shell_words.hpp"
 #include "sweep/sweep_command_support.hpp"
 
@@ -117,20 +118,20 @@ TEST(SweepCommand, RecordsEveryJobWithItsSweepAndAxes) {
   const Outcome outcome = run(dir, config + " -m 'seed=range(0,2)' policy.network.width=4,8 -j 2");
   ASSERT_EQ(outcome.exit_code, 0) << outcome.out;
   ResultStore store(dir.file("r.sqlite"));
-  EXPECT_EQ(store.query_int("SELECT count(*) FROM runs WHERE status = 'completed'"), 4);
-  EXPECT_EQ(store.query_int("SELECT count(DISTINCT sweep_id) FROM runs"), 1);
-  EXPECT_EQ(store.query_int("SELECT jobs FROM sweeps"), 4);
-  EXPECT_EQ(store.query_text("SELECT axes FROM runs WHERE job_index = 3"),
+  EXPECT_EQ(testing::query_int(store, "SELECT count(*) FROM runs WHERE status = 'completed'"), 4);
+  EXPECT_EQ(testing::query_int(store, "SELECT count(DISTINCT sweep_id) FROM runs"), 1);
+  EXPECT_EQ(testing::query_int(store, "SELECT jobs FROM sweeps"), 4);
+  EXPECT_EQ(testing::query_text(store, "SELECT axes FROM runs WHERE job_index = 3"),
             R"({"seed":"1","policy.network.width":"8"})");
-  EXPECT_EQ(store.query_int("SELECT seed FROM runs WHERE job_index = 3"), 1);
+  EXPECT_EQ(testing::query_int(store, "SELECT seed FROM runs WHERE job_index = 3"), 1);
   // Resuming a finished sweep runs nothing more.
-  const std::string id = store.query_text("SELECT id FROM sweeps");
+  const std::string id = testing::query_text(store, "SELECT id FROM sweeps");
   const Outcome again = run(dir, "--resume " + id);
   EXPECT_EQ(again.exit_code, 0) << again.out;
   EXPECT_NE(again.out.find("0 completed, 0 failed, 0 interrupted (4 completed before)"),
             std::string::npos)
       << again.out;
-  EXPECT_EQ(store.query_int("SELECT count(*) FROM runs"), 4);
+  EXPECT_EQ(testing::query_int(store, "SELECT count(*) FROM runs"), 4);
   EXPECT_EQ(run(dir, "--resume no-such-sweep").exit_code, 2);
   EXPECT_EQ(run(dir, config + " --resume " + id).exit_code, 2);
 }
@@ -167,7 +168,7 @@ TEST(SweepCommand, MakesTheDatabaseFolderAndRemovesItsLockWhenDone) {
   const Outcome outcome = run(dir, config + " -m seed=0,1", db);
   ASSERT_EQ(outcome.exit_code, 0) << outcome.out;
   ResultStore store(db);
-  EXPECT_EQ(store.query_int("SELECT count(*) FROM runs WHERE status = 'completed'"), 2);
+  EXPECT_EQ(testing::query_int(store, "SELECT count(*) FROM runs WHERE status = 'completed'"), 2);
   EXPECT_EQ(files_named(dir.file("new/folder"), ".lock"), 0);
 }
 
@@ -214,8 +215,8 @@ TEST(SweepCommand, CtrlCStopsTheJobsAndCountsTheOnesNeverStarted) {
   EXPECT_NE(out.find("resume with: run_experiment --resume "), std::string::npos) << out;
   EXPECT_NE(out.find(" -j 2\n"), std::string::npos) << out;
   ResultStore store(dir.file("r.sqlite"));
-  EXPECT_EQ(store.query_int("SELECT count(*) FROM runs"), 2);
-  EXPECT_EQ(store.query_int("SELECT count(*) FROM runs WHERE status = 'interrupted'"), 2);
+  EXPECT_EQ(testing::query_int(store, "SELECT count(*) FROM runs"), 2);
+  EXPECT_EQ(testing::query_int(store, "SELECT count(*) FROM runs WHERE status = 'interrupted'"), 2);
 }
 
 // A closed terminal (SIGHUP to the driver and its jobs, one process group) stops the sweep as
@@ -248,7 +249,7 @@ TEST(SweepCommand, UnderNohupAHangupIsIgnoredAndTheRunFinishes) {
   ASSERT_TRUE(WIFEXITED(status)) << "killed by signal " << WTERMSIG(status);
   EXPECT_EQ(WEXITSTATUS(status), 0);
   ResultStore store(db);
-  EXPECT_EQ(store.query_int("SELECT count(*) FROM runs WHERE status = 'completed'"), 1);
+  EXPECT_EQ(testing::query_int(store, "SELECT count(*) FROM runs WHERE status = 'completed'"), 1);
 }
 
 TEST(SweepCommand, AHangupStopsTheSweepLikeCtrlC) {
@@ -294,9 +295,10 @@ TEST(SweepCommand, AHangupStopsTheSweepLikeCtrlC) {
   std::string id;
   {
     ResultStore store(db);
-    EXPECT_EQ(store.query_int("SELECT count(*) FROM runs WHERE status = 'interrupted'"), 2);
-    EXPECT_EQ(store.query_int("SELECT count(*) FROM runs WHERE status = 'running'"), 0);
-    id = store.query_text("SELECT id FROM sweeps");
+    EXPECT_EQ(testing::query_int(store, "SELECT count(*) FROM runs WHERE status = 'interrupted'"),
+              2);
+    EXPECT_EQ(testing::query_int(store, "SELECT count(*) FROM runs WHERE status = 'running'"), 0);
+    id = testing::query_text(store, "SELECT id FROM sweeps");
   }
   const std::string prefix = "resume with: ";
   const size_t at = out.find(prefix);
@@ -337,7 +339,7 @@ TEST(SweepCommand, MergeRefusesABadShardBeforeMergingAny) {
   const Outcome merged = merge(first + " " + second);
   ASSERT_EQ(merged.exit_code, 0) << merged.out;
   ResultStore store(target);
-  EXPECT_EQ(store.query_int("SELECT count(*) FROM runs WHERE status = 'completed'"), 2);
+  EXPECT_EQ(testing::query_int(store, "SELECT count(*) FROM runs WHERE status = 'completed'"), 2);
 }
 
 TEST(SweepCommand, AKilledSweepResumesToExactlyOneCompletedRunPerJob) {
@@ -359,17 +361,18 @@ TEST(SweepCommand, AKilledSweepResumesToExactlyOneCompletedRunPerJob) {
   std::string id;
   {
     ResultStore store(dir.file("r.sqlite"));
-    id = store.query_text("SELECT id FROM sweeps");
-    EXPECT_LT(store.query_int("SELECT count(*) FROM runs WHERE status = 'completed'"), 6);
+    id = testing::query_text(store, "SELECT id FROM sweeps");
+    EXPECT_LT(testing::query_int(store, "SELECT count(*) FROM runs WHERE status = 'completed'"), 6);
   }
   const Outcome resumed = run(dir, "--resume " + id + " -j 2");
   ASSERT_EQ(resumed.exit_code, 0) << resumed.out;
   ResultStore store(dir.file("r.sqlite"));
-  EXPECT_EQ(store.query_int("SELECT count(*) FROM runs WHERE status = 'completed'"), 6);
-  EXPECT_EQ(store.query_int("SELECT count(DISTINCT job_index) FROM runs WHERE status = "
-                            "'completed'"),
+  EXPECT_EQ(testing::query_int(store, "SELECT count(*) FROM runs WHERE status = 'completed'"), 6);
+  EXPECT_EQ(testing::query_int(store,
+                               "SELECT count(DISTINCT job_index) FROM runs WHERE status = "
+                               "'completed'"),
             6);
-  EXPECT_EQ(store.query_int("SELECT count(*) FROM runs WHERE status = 'running'"), 0);
+  EXPECT_EQ(testing::query_int(store, "SELECT count(*) FROM runs WHERE status = 'running'"), 0);
 }
 
 // Two jobs needing the same demonstrations at the same time: one collects them,
@@ -385,9 +388,10 @@ TEST(SweepCommand, ConcurrentJobsShareOneCacheEntry) {
   ResultStore store(dir.file("r.sqlite"));
   int collected = 0, reused = 0;
   for (int job = 0; job < 2; ++job) {
-    const std::string run_log = read_text(
-        store.query_text("SELECT out_dir FROM runs WHERE job_index = " + std::to_string(job)) +
-        "/log.txt");
+    const std::string run_log =
+        read_text(testing::query_text(
+                      store, "SELECT out_dir FROM runs WHERE job_index = " + std::to_string(job)) +
+                  "/log.txt");
     if (run_log.find("reusing cached demonstrations") != std::string::npos) {
       ++reused;
     } else if (run_log.find("demonstrations: 9 in") != std::string::npos) {
@@ -402,10 +406,12 @@ TEST(SweepCommand, ConcurrentJobsShareOneCacheEntry) {
     EXPECT_EQ(entry.path().extension() == ".tmp", false) << entry.path();
   }
   EXPECT_EQ(caches, 1);
-  EXPECT_EQ(store.query_text("SELECT group_concat(scenario, '|') FROM trials WHERE run_id = "
-                             "(SELECT id FROM runs WHERE job_index = 0)"),
-            store.query_text("SELECT group_concat(scenario, '|') FROM trials WHERE run_id = "
-                             "(SELECT id FROM runs WHERE job_index = 1)"));
+  EXPECT_EQ(testing::query_text(store,
+                                "SELECT group_concat(scenario, '|') FROM trials WHERE run_id = "
+                                "(SELECT id FROM runs WHERE job_index = 0)"),
+            testing::query_text(store,
+                                "SELECT group_concat(scenario, '|') FROM trials WHERE run_id = "
+                                "(SELECT id FROM runs WHERE job_index = 1)"));
 }
 
 TEST(SweepCommand, RunsOnARealSlurmAndMergesTheShardsOnce) {
@@ -419,11 +425,11 @@ TEST(SweepCommand, RunsOnARealSlurmAndMergesTheShardsOnce) {
   const Outcome outcome = run(dir, config + " -m seed=0,1 --launcher slurm --wait --threads 1");
   ASSERT_EQ(outcome.exit_code, 0) << outcome.out;
   ResultStore store(dir.file("r.sqlite"));
-  EXPECT_EQ(store.query_int("SELECT count(*) FROM runs WHERE status = 'completed'"), 2);
-  EXPECT_EQ(store.query_int("SELECT count(*) FROM sweeps"), 1);
+  EXPECT_EQ(testing::query_int(store, "SELECT count(*) FROM runs WHERE status = 'completed'"), 2);
+  EXPECT_EQ(testing::query_int(store, "SELECT count(*) FROM sweeps"), 1);
   // Both shards number their run 1: the run directories still differ.
-  EXPECT_EQ(store.query_int("SELECT count(DISTINCT out_dir) FROM runs"), 2);
-  const std::string id = store.query_text("SELECT id FROM sweeps");
+  EXPECT_EQ(testing::query_int(store, "SELECT count(DISTINCT out_dir) FROM runs"), 2);
+  const std::string id = testing::query_text(store, "SELECT id FROM sweeps");
   const std::string shards = dir.file("runs/sweeps/" + id + "/shards");
   EXPECT_TRUE(std::filesystem::exists(shards + "/job-0.sqlite"));
   EXPECT_TRUE(std::filesystem::exists(shards + "/job-1.sqlite"));
@@ -432,9 +438,10 @@ TEST(SweepCommand, RunsOnARealSlurmAndMergesTheShardsOnce) {
                             "/job-0.sqlite " + shards + "/job-1.sqlite --db " +
                             dir.file("r.sqlite") + " > /dev/null";
   EXPECT_EQ(std::system(merge.c_str()), 0);
-  EXPECT_EQ(store.query_int("SELECT count(*) FROM runs"), 2);
-  EXPECT_EQ(store.query_int("SELECT count(*) FROM trials"),
-            store.query_int("SELECT count(*) FROM trials WHERE run_id IN (SELECT id FROM runs)"));
+  EXPECT_EQ(testing::query_int(store, "SELECT count(*) FROM runs"), 2);
+  EXPECT_EQ(testing::query_int(store, "SELECT count(*) FROM trials"),
+            testing::query_int(
+                store, "SELECT count(*) FROM trials WHERE run_id IN (SELECT id FROM runs)"));
 }
 
 TEST(SweepCommand, RefusesSlurmResourcesAnSbatchLineCannotHoldWritingNothing) {

@@ -10,6 +10,7 @@
 
 #include "config/test_files.hpp"
 #include "store/result_store.hpp"
+#include "support/store_sql.hpp"
 #include "sweep/shell_words.hpp"
 #include "sweep/sweep_command_support.hpp"
 
@@ -68,10 +69,11 @@ TEST(SweepHostileInput, ASweepIdThatIsNotASafeNameIsRefusedWhereverItIsRead) {
   std::string id;
   {
     ResultStore store(dir.file("r.sqlite"));
-    id = store.query_text("SELECT id FROM sweeps");
-    store.execute("UPDATE sweeps SET manifest = replace(manifest, 'id: " + id +
-                  "', 'id: ../../escape')");
-    store.execute("UPDATE runs SET status = 'failed'");  // so that a resume runs them again
+    id = testing::query_text(store, "SELECT id FROM sweeps");
+    testing::execute_sql(store, "UPDATE sweeps SET manifest = replace(manifest, 'id: " + id +
+                                    "', 'id: ../../escape')");
+    testing::execute_sql(store,
+                         "UPDATE runs SET status = 'failed'");  // so that a resume runs them again
   }
   const Outcome resumed = run(dir, "--resume " + id);
   EXPECT_EQ(resumed.exit_code, 2) << resumed.out;

@@ -15,6 +15,7 @@
 #include "config/test_files.hpp"
 #include "store/result_store.hpp"
 #include "support/child_process.hpp"
+#include "support/store_sql.hpp"
 #include "sweep/sweep_command_support.hpp"
 
 namespace corrmp {
@@ -55,7 +56,7 @@ TEST(SweepResume, ASecondDriverThroughASymlinkToTheDatabaseIsRefused) {
   std::string id;
   {
     ResultStore store(db);
-    id = store.query_text("SELECT id FROM sweeps");
+    id = testing::query_text(store, "SELECT id FROM sweeps");
   }
   std::filesystem::create_symlink(db, dir.file("link.sqlite"));
   std::filesystem::create_directory_symlink(dir.path(), dir.file("alias"));
@@ -67,7 +68,7 @@ TEST(SweepResume, ASecondDriverThroughASymlinkToTheDatabaseIsRefused) {
         << second.out;
   }
   ResultStore store(db);
-  EXPECT_EQ(store.query_int("SELECT count(*) FROM runs"), 1);
+  EXPECT_EQ(testing::query_int(store, "SELECT count(*) FROM runs"), 1);
 }
 
 TEST(SweepResume, ABaseConfigEditedSinceTheSweepStartedIsRefused) {
@@ -77,7 +78,7 @@ TEST(SweepResume, ABaseConfigEditedSinceTheSweepStartedIsRefused) {
   std::string id;
   {
     ResultStore store(dir.file("r.sqlite"));
-    id = store.query_text("SELECT id FROM sweeps");
+    id = testing::query_text(store, "SELECT id FROM sweeps");
   }
   // A comment changes no value: the sweep resumes.
   dir.write("tiny.yaml", kTiny + "# the same values\n");
@@ -125,7 +126,7 @@ TEST(SweepResume, AnEarlierAttemptMarkedInterruptedByItsJobSaysSoInItsRunJson) {
   std::string run_json;
   {
     ResultStore store(db);
-    run_json = store.query_text("SELECT out_dir FROM runs WHERE id = 1") + "/run.json";
+    run_json = testing::query_text(store, "SELECT out_dir FROM runs WHERE id = 1") + "/run.json";
   }
   const auto deadline = std::chrono::steady_clock::now() + std::chrono::seconds(30);
   while (read_text(run_json).find("\"status\": \"running\"") == std::string::npos &&
