@@ -3,8 +3,8 @@
 // report --compare [--by KEY ...] [--baseline GROUP] [--out DIR] ...
 // report --reproduction --sweep ID --out DIR
 // report --plot-success KEY [--sweep ID ...] --out DIR
-// Prints one row per recorded run (task success, decision match, cor-MP and
-// post-MP errors of the paper's Tables I and II) with the settings that vary
+// Prints one row per recorded run (task success, decision match and each
+// trajectory error the run declared) with the settings that vary
 // between runs of the same experiment, as Markdown or CSV; with --decisions,
 // each run's decisions by expected label in its task's order (Table I); with --compare,
 // groups of runs side by side with means and 95% intervals across seeds and
@@ -149,7 +149,7 @@ int main(int argc, char** argv) {
       ->check(corrmp::positive_number());
   app.add_option("--metric", format.extra_metrics, "more metric columns, by name");
   app.add_flag("--csv", csv, "CSV instead of Markdown");
-  app.add_flag("--paper", paper, "append the paper's rows (Markdown; corridor runs)");
+  app.add_flag("--paper", paper, "append the paper's rows (Markdown; runs of the paper's task)");
   app.add_flag("--all", all, "include failed, interrupted and running runs");
   app.add_flag("--decisions", decisions,
                "each run's trials by expected decision, in its task's label order: action "

@@ -8,24 +8,38 @@ namespace corrmp {
 
 namespace {
 
-// The labels the runs expected (their expected_<label> metrics), in the
-// spec's order, then any other alphabetically, then all trials.
+// The labels the runs expected (their expected_<label> metrics), in the order their tasks declared
+// them (first seen for runs recorded before tasks were stored), then all trials. The spec's order
+// is used only when no run of its experiments declared one.
 std::vector<std::string> labels_of(const LabelSuccessSpec& spec, const RunsOf& runs_of) {
-  std::set<std::string> found;
+  std::vector<std::string> labels;
+  bool declared = false;
   for (const auto& experiment : spec.experiments) {
     const auto it = runs_of.find(experiment);
     if (it == runs_of.end()) continue;
     for (const auto* run : it->second) {
-      for (const auto& [name, value] : run->metrics) {
-        if (name.rfind("expected_", 0) == 0) found.insert(name.substr(9));
+      declared = declared || (run->task && !run->task->decision_labels.empty());
+      for (const auto& label : decision_labels(*run)) {
+        if (!run->metrics.count("expected_" + label)) continue;  // never expected in this run
+        if (std::find(labels.begin(), labels.end(), label) == labels.end()) {
+          labels.push_back(label);
+        }
       }
     }
   }
-  std::vector<std::string> labels;
-  for (const auto& label : spec.labels) {
-    if (found.erase(label)) labels.push_back(label);
+  if (!declared) {  // runs recorded before tasks were stored: the spec's order, then the rest
+    std::vector<std::string> ordered;
+    for (const auto& label : spec.labels) {
+      if (std::find(labels.begin(), labels.end(), label) != labels.end()) ordered.push_back(label);
+    }
+    std::vector<std::string> rest;
+    for (const auto& label : labels) {
+      if (std::find(ordered.begin(), ordered.end(), label) == ordered.end()) rest.push_back(label);
+    }
+    std::sort(rest.begin(), rest.end());
+    ordered.insert(ordered.end(), rest.begin(), rest.end());
+    labels = ordered;
   }
-  labels.insert(labels.end(), found.begin(), found.end());
   labels.push_back(kAllTrialsRow);
   return labels;
 }

@@ -18,7 +18,8 @@ struct LabelSuccessSpec {
   std::string absent_text;    // the section's text when no experiment has runs
   std::string label_heading;  // the first column's heading
   std::vector<std::string> experiments;
-  // The labels first in this order, then any other the runs expected, alphabetically.
+  // For runs recorded without their task's declaration: the labels first in this order, then
+  // any other the runs expected, alphabetically. Runs that declared an order use it.
   std::vector<std::string> labels;
 
   template <class Fields>

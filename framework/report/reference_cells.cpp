@@ -81,7 +81,10 @@ ReportCell metric_cell(const std::string& table, const std::string& row, const s
                        bool higher_is_better) {
   const MeanInterval m = mean_interval(samples(runs, metric));
   ReportCell cell{table, row, group, metric, m.count, m.mean, m.low, m.high, "", "", ""};
-  const IntervalBounds clipped = metric_interval(declared_metric(runs, metric), m);
+  const MetricDeclaration declared = declared_metric(runs, metric);
+  // The direction the runs declared; the reference's own only when they declared none.
+  if (declared.better != Better::neither) higher_is_better = declared.better == Better::higher;
+  const IntervalBounds clipped = metric_interval(declared, m);
   cell.low = clipped.low;
   cell.high = clipped.high;
   cell.ours = interval_text(m, cell.low, cell.high, percent, runs.size());

@@ -1,5 +1,5 @@
-// Reports over recorded runs: one row per run with the paper's Table I and II
-// figures (task success, decision match, cor-MP and post-MP errors) and the
+// Reports over recorded runs: one row per run with its task success, decision
+// match and each trajectory error it declared, and the
 // settings that vary between runs of the same experiment, so a sweep or a
 // comparison with the baseline reads as one table (Markdown or CSV).
 #pragma once

@@ -23,8 +23,8 @@ TEST(ViaPointRun, SegmentedCnmpsWithPerfectContextSucceedOnUnseenScenarios) {
   const RunSummary& summary = runs.front();
   EXPECT_EQ(summary.experiment, "via_point_pc");
   EXPECT_EQ(summary.trials, 50);
-  // Over training seeds 0-4, each on its own evaluation seed, every run succeeded in 50 of 50
-  // trials with a decision match of 96-100% and a cor-MP error below 0.5 mm.
+  // Thresholds well below what the task reaches (docs/results.md), on an evaluation seed of its
+  // own.
   EXPECT_GE(summary.metrics.at("task_success_rate"), 0.9);
   EXPECT_GE(summary.metrics.at("decision_match_rate"), 0.9);
   EXPECT_GE(summary.metrics.at("passed_via_rate"), 0.9);
