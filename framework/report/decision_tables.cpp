@@ -223,7 +223,8 @@ std::string decision_tables_section(const DecisionTablesSpec& spec, const RunsOf
 std::vector<ErrorMetric> reference_columns(const DecisionTablesSpec& spec) {
   std::vector<ErrorMetric> columns;
   for (const auto& error : spec.errors) {
-    columns.push_back({error.mean, error.max, error.heading + " error mean / max"});
+    const std::string unit = error.unit.empty() ? "" : " (" + error.unit + ")";
+    columns.push_back({error.mean, error.max, error.heading + " error mean / max" + unit});
   }
   return columns;
 }

@@ -22,12 +22,14 @@ namespace corrmp {
 struct ErrorColumns {
   std::string heading;    // "<heading> mean" and "<heading> max"
   std::string mean, max;  // metric names
+  std::string unit;       // the errors' unit, in the run table's heading
 
   template <class Fields>
   void describe(Fields& f) {
     f("heading", heading, "the columns' heading, before 'mean' and 'max'", required());
     f("mean", mean, "the mean error's metric", required());
     f("max", max, "the largest error's metric", required());
+    f("unit", unit, "the errors' unit, shown in the run table's heading");
   }
 };
 

@@ -56,6 +56,22 @@ TEST(PaperRows, AppendsThePapersRows) {
       << with_status;
 }
 
+// An error of the paper's that no selected run recorded still gets its column, headed as the
+// runs' own would be.
+TEST(PaperRows, AnErrorNoRunRecordedIsHeadedWithItsUnit) {
+  TempDir dir;
+  ResultStore store(dir.file("r.sqlite"));
+  add_run(store, "corridor_pc", "environment: {type: corridor_push}\nseed: 0\n", 1.0, 0.2);
+  ReportFormat format;
+  format.reference_rows = reference_rows(tables());
+  format.reference_columns = reference_columns(tables());
+  const std::string markdown = report_markdown(load_run_summaries(store, {}), format);
+  EXPECT_NE(markdown.find("| post-MP error mean / max (cm) |"), std::string::npos) << markdown;
+  EXPECT_NE(markdown.find("| | paper: pc | | 24 of 25 | 100% | 0.80 / 1.45 | 1.69 / 3.19 |"),
+            std::string::npos)
+      << markdown;
+}
+
 // The paper's numbers are of the corridor: a selection of another task's runs gets none.
 TEST(PaperRows, AppendsNoPaperRowsToRunsOfAnotherTask) {
   TempDir dir;
