@@ -61,10 +61,10 @@ struct SuccessDifference {
 };
 
 struct RunComparison {
-  std::string grouping;              // "experiment" or the group_by keys
-  std::vector<std::string> metrics;  // the metric columns, in order
+  std::string grouping;                                   // "experiment" or the group_by keys
+  std::vector<std::string> metrics;                       // the metric columns, in order
   std::map<std::string, MetricDeclaration> declarations;  // of the metric columns, by name
-  std::vector<RunGroup> groups;      // in the order of their first run
+  std::vector<RunGroup> groups;                           // in the order of their first run
   std::vector<SuccessDifference> differences;
 };
 

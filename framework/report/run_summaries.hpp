@@ -41,7 +41,7 @@ struct RunSummary {
   std::map<std::string, std::string> settings;     // the resolved config, flattened
   std::string out_dir;                             // the run's folder as recorded
   std::map<std::string, double> metrics;
-  std::vector<std::string> metric_order;  // the names as the run recorded them
+  std::vector<std::string> metric_order;                  // the names as the run recorded them
   std::map<std::string, MetricDeclaration> declarations;  // of the metrics, by name
   std::optional<TaskDeclaration> task;  // none without an environment or in an old database
 };

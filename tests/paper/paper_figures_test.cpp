@@ -15,24 +15,13 @@ namespace corrmp {
 namespace {
 
 namespace fs = std::filesystem;
+using testing::any_note;
+using testing::contains;
 using testing::files_in;
+using testing::png_size;
 using testing::run_of;
 using testing::TempDir;
 using testing::write_trajectories;
-
-cv::Size png_size(const std::string& path) {
-  const cv::Mat image = cv::imread(path);
-  return image.empty() ? cv::Size() : image.size();
-}
-
-bool contains(const std::string& text, const std::string& part) {
-  return text.find(part) != std::string::npos;
-}
-
-bool any_note(const FigureSet& set, const std::string& part) {
-  return std::any_of(set.notes.begin(), set.notes.end(),
-                     [&](const std::string& note) { return contains(note, part); });
-}
 
 TEST(PaperFigures, TheReportsFiguresComeFromTheFirstSeedsRunsAndCopiedFiles) {
   TempDir dir;

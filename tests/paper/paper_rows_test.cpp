@@ -5,10 +5,12 @@
 #include "config/test_files.hpp"
 #include "paper/paper.hpp"
 #include "report/run_report.hpp"
+#include "support/recorded_runs.hpp"
 
 namespace corrmp {
 namespace {
 
+using testing::record_scored_run;
 using testing::TempDir;
 
 const DecisionTablesSpec& tables() {
@@ -17,24 +19,11 @@ const DecisionTablesSpec& tables() {
   return spec;
 }
 
-int64_t add_run(ResultStore& store, const std::string& experiment, const std::string& config,
-                double success, double cor_error) {
-  const int64_t id = store.begin_run({experiment, config, "hash", 0, "", false, "", "", 0, ""});
-  std::vector<TrialRecord> trials;
-  for (int t = 0; t < 4; ++t) trials.push_back({t, "{}", "push", "push", t < 4 * success, "", ""});
-  store.complete_run(id, trials,
-                     {{"task_success_rate", success},
-                      {"decision_match_rate", 0.75},
-                      {"cor_mp_error_mean_cm", cor_error},
-                      {"cor_mp_error_max_cm", 2 * cor_error},
-                      {"demonstrations_train", 100}});
-  return id;
-}
-
 TEST(PaperRows, AppendsThePapersRows) {
   TempDir dir;
   ResultStore store(dir.file("r.sqlite"));
-  add_run(store, "corridor_pc", "environment: {type: corridor_push}\nseed: 0\n", 1.0, 0.2);
+  record_scored_run(store, "corridor_pc", "environment: {type: corridor_push}\nseed: 0\n", 1.0,
+                    0.2);
   ReportFormat format;
   EXPECT_TRUE(reference_rows_apply(load_run_summaries(store, {}), tables()));
   format.reference_rows = reference_rows(tables());
@@ -61,7 +50,8 @@ TEST(PaperRows, AppendsThePapersRows) {
 TEST(PaperRows, AnErrorNoRunRecordedIsHeadedWithItsUnit) {
   TempDir dir;
   ResultStore store(dir.file("r.sqlite"));
-  add_run(store, "corridor_pc", "environment: {type: corridor_push}\nseed: 0\n", 1.0, 0.2);
+  record_scored_run(store, "corridor_pc", "environment: {type: corridor_push}\nseed: 0\n", 1.0,
+                    0.2);
   ReportFormat format;
   format.reference_rows = reference_rows(tables());
   format.reference_columns = reference_columns(tables());
@@ -76,7 +66,7 @@ TEST(PaperRows, AnErrorNoRunRecordedIsHeadedWithItsUnit) {
 TEST(PaperRows, AppendsNoPaperRowsToRunsOfAnotherTask) {
   TempDir dir;
   ResultStore store(dir.file("r.sqlite"));
-  add_run(store, "rope_color", "environment: {type: rope_knot}\nseed: 0\n", 1.0, 0.2);
+  record_scored_run(store, "rope_color", "environment: {type: rope_knot}\nseed: 0\n", 1.0, 0.2);
   ReportFormat format;
   const auto runs = load_run_summaries(store, {});
   EXPECT_FALSE(reference_rows_apply(runs, tables()));

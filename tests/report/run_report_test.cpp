@@ -14,28 +14,15 @@
 namespace corrmp {
 namespace {
 
+using testing::record_scored_run;
 using testing::TempDir;
-
-int64_t add_run(ResultStore& store, const std::string& experiment, const std::string& config,
-                double success, double cor_error) {
-  const int64_t id = store.begin_run({experiment, config, "hash", 0, "", false, "", "", 0, ""});
-  std::vector<TrialRecord> trials;
-  for (int t = 0; t < 4; ++t) trials.push_back({t, "{}", "push", "push", t < 4 * success, "", ""});
-  store.complete_run(id, trials,
-                     testing::as_migrated({{"task_success_rate", success},
-                                           {"decision_match_rate", 0.75},
-                                           {"cor_mp_error_mean_cm", cor_error},
-                                           {"cor_mp_error_max_cm", 2 * cor_error},
-                                           {"demonstrations_train", 100}}));
-  return id;
-}
 
 // The error columns are whatever the runs recorded, in the order they did:
 // another task's segments and unit get theirs, and a run without one shows "-".
 TEST(RunReport, ErrorColumnsFollowWhatTheRunsRecorded) {
   TempDir dir;
   ResultStore store(dir.file("r.sqlite"));
-  add_run(store, "corridor_pc", "seed: 0\n", 1.0, 0.2);
+  record_scored_run(store, "corridor_pc", "seed: 0\n", 1.0, 0.2);
   const int64_t id = store.begin_run({"rope", "seed: 0\n", "hash", 0, "", false, "", "", 0, ""});
   store.complete_run(id, {},
                      testing::as_migrated({{"task_success_rate", 0.5},
@@ -90,10 +77,10 @@ TEST(RunReport, FlattensConfigsToDottedKeys) {
 TEST(RunReport, TabulatesRunsWithTheSettingsTheyVary) {
   TempDir dir;
   ResultStore store(dir.file("r.sqlite"));
-  add_run(store, "sweep", "seed: 0\nevaluation: {seed: 1, trials: 4}\n", 1.0, 0.2);
-  add_run(store, "sweep", "seed: 0\nevaluation: {seed: 2, trials: 4}\n", 0.5, 0.4);
-  add_run(store, "other", "seed: 0\nnote: a\n", 0.25, 0.1);
-  add_run(store, "other", "seed: 0\nnote: a|b\n", 0.25, 0.1);
+  record_scored_run(store, "sweep", "seed: 0\nevaluation: {seed: 1, trials: 4}\n", 1.0, 0.2);
+  record_scored_run(store, "sweep", "seed: 0\nevaluation: {seed: 2, trials: 4}\n", 0.5, 0.4);
+  record_scored_run(store, "other", "seed: 0\nnote: a\n", 0.25, 0.1);
+  record_scored_run(store, "other", "seed: 0\nnote: a|b\n", 0.25, 0.1);
   const int64_t failed =
       store.begin_run({"sweep", "seed: 9\n", "hash", 0, "", false, "", "", 0, ""});
   store.end_run(failed, RunStatus::failed, "for the test");
@@ -161,7 +148,7 @@ TEST(RunReport, TabulatesRunsWithTheSettingsTheyVary) {
 TEST(RunReport, AppendsReferenceRowsWithTheirErrorColumns) {
   TempDir dir;
   ResultStore store(dir.file("r.sqlite"));
-  add_run(store, "lift_a", "seed: 0\n", 1.0, 0.2);
+  record_scored_run(store, "lift_a", "seed: 0\n", 1.0, 0.2);
   ReportFormat format;
   format.reference_rows = {
       {"paper: a",
@@ -197,7 +184,7 @@ TEST(ReportTool, PrintsTheRunsOrSaysWhatIsWrongInOneLine) {
   TempDir dir;
   {
     ResultStore store(dir.file("r.sqlite"));
-    add_run(store, "corridor_mono", "seed: 0\n", 0.5, 0.3);
+    record_scored_run(store, "corridor_mono", "seed: 0\n", 0.5, 0.3);
   }
   const ToolOutcome ok = run_report_tool(dir, "--db " + dir.file("r.sqlite") + " --csv");
   EXPECT_EQ(ok.exit_code, 0) << ok.err;

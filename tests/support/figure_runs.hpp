@@ -4,14 +4,33 @@
 
 #include <fmt/format.h>
 
+#include <algorithm>
 #include <map>
 #include <optional>
 #include <string>
+
+#include <opencv2/imgcodecs.hpp>
 
 #include "config/test_files.hpp"
 #include "report/reproduction_figures.hpp"
 
 namespace corrmp::testing {
+
+// The size of the PNG at `path`, or 0 x 0 when it cannot be read.
+inline cv::Size png_size(const std::string& path) {
+  const cv::Mat image = cv::imread(path);
+  return image.empty() ? cv::Size() : image.size();
+}
+
+inline bool contains(const std::string& text, const std::string& part) {
+  return text.find(part) != std::string::npos;
+}
+
+// Whether a note of the figure set mentions `part`.
+inline bool any_note(const FigureSet& set, const std::string& part) {
+  return std::any_of(set.notes.begin(), set.notes.end(),
+                     [&](const std::string& note) { return contains(note, part); });
+}
 
 inline RunSummary run_of(int64_t id, const std::string& experiment,
                          std::map<std::string, std::string> axes, std::optional<double> success) {

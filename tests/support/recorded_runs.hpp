@@ -28,7 +28,7 @@ struct RunSpec {
   std::vector<MetricRecord> metrics;
   std::string sweep_id;  // empty: outside a sweep
   int job_index = 0;
-  std::string axes;  // JSON object
+  std::string axes;                     // JSON object
   std::optional<TaskDeclaration> task;  // what the run's task declared
 };
 
@@ -109,6 +109,23 @@ inline std::vector<TrialSpec> trials_of(const std::string& action, int count, in
   std::vector<TrialSpec> trials;
   for (int i = 0; i < count; ++i) trials.push_back({action, action, i < successes});
   return trials;
+}
+
+// A completed run of four trials (expected and chosen push) with the given task success, a
+// decision match of 75%, a cor-MP error of `cor_error` cm (its max twice that) and 100 training
+// demonstrations.
+inline int64_t record_scored_run(ResultStore& store, const std::string& experiment,
+                                 const std::string& config, double success, double cor_error) {
+  const int64_t id = store.begin_run({experiment, config, "hash", 0, "", false, "", "", 0, ""});
+  std::vector<TrialRecord> trials;
+  for (int t = 0; t < 4; ++t) trials.push_back({t, "{}", "push", "push", t < 4 * success, "", ""});
+  store.complete_run(id, trials,
+                     as_migrated({{"task_success_rate", success},
+                                  {"decision_match_rate", 0.75},
+                                  {"cor_mp_error_mean_cm", cor_error},
+                                  {"cor_mp_error_max_cm", 2 * cor_error},
+                                  {"demonstrations_train", 100}}));
+  return id;
 }
 
 }  // namespace corrmp::testing
