@@ -13,6 +13,7 @@
 #include <vector>
 
 #include "core/seeds.hpp"
+#include "core/task_declaration.hpp"
 #include "data/demonstrations.hpp"
 #include "data/evaluated_trial.hpp"
 #include "data/observation.hpp"
@@ -38,38 +39,8 @@ struct Outcome {
   std::map<std::string, double> details;
 };
 
-// What a task reports. Trajectories are in the task's own unit (metres for the
-// Bullet tasks); errors are reported in `error_unit`, `error_scale` of them
-// per trajectory unit. Every task declares its own columns and error unit.
-struct TaskReport {
-  std::vector<std::string> trajectory_columns;
-  std::string error_unit;
-  double error_scale = 1.0;
-  // Segments whose generated trajectory is compared with the expert's (the
-  // paper's Table II), in table order; the metric names are
-  // <segment>_mp_error_mean_<unit> and <segment>_mp_error_max_<unit>.
-  std::vector<std::string> error_segments;
-  // The trajectory columns the errors measure (positions, not a gripper's
-  // opening); empty: all of them.
-  std::vector<int> error_columns;
-  // The decision made at the critical point (the paper's Table I): the segment
-  // whose generated trajectory classify_decision() reads and the labels it
-  // can return, in table order. No labels: the task has no such decision.
-  std::string decision_segment;
-  std::vector<std::string> decision_labels;
-  // The columns a relative segment's rows give as offsets from the segment's
-  // start (positions); the others stay absolute (a gripper's opening). Empty:
-  // all of them.
-  std::vector<int> relative_columns;
-  // The two trajectory columns of the trajectories figure's panels.
-  int plot_horizontal = 0;
-  int plot_vertical = 1;
-  // Names of Outcome::metrics every trial carries.
-  std::vector<std::string> outcome_metrics;
-  // Failure categories: a failed trial's reason starts with one of them, and
-  // the tables count the failures per category.
-  std::vector<std::string> failure_categories;
-};
+// What a task reports (core/task_declaration.hpp); the result store keeps it with each run.
+using TaskReport = TaskDeclaration;
 
 // TaskReport::relative_columns, or every column of a `width`-column row.
 inline std::vector<int> relative_columns_of(const TaskReport& task, Eigen::Index width) {

@@ -23,7 +23,6 @@
 #include "experiment/interrupted_runs.hpp"
 #include "experiment/policy_fitting.hpp"
 #include "experiment/provenance.hpp"
-#include "experiment/recorded_task.hpp"
 #include "experiment/training_curves.hpp"
 #include "store/result_store.hpp"
 
@@ -236,7 +235,7 @@ RunResult run_pipeline(Experiment& experiment, const RunOptions& options) {
                    options.job_index,
                    options.axes_json,
                    {}};
-  if (experiment.environment) record.task = recorded_task(experiment.environment->report());
+  if (experiment.environment) record.task = experiment.environment->report();
   result.run_id = store.begin_run(record);
   const std::string started_at = utc_timestamp();
   // A sweep's runs get their own folder: the shard databases of a Slurm array

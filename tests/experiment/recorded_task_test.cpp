@@ -1,7 +1,5 @@
-// Tests of what a run stores of its task (experiment/recorded_task.hpp): every field of the
-// task's TaskReport, read back by the reports, which take the task's unit and label order from it.
-#include "experiment/recorded_task.hpp"
-
+// Tests of what a run stores of its task (its TaskReport, core/task_declaration.hpp), read back
+// by the reports, which take the task's unit and label order from it.
 #include <gtest/gtest.h>
 
 #include "config/test_files.hpp"
@@ -33,23 +31,6 @@ TaskReport reach_task() {
   return task;
 }
 
-TEST(RecordedTask, HoldsEveryFieldTheTaskDeclared) {
-  const TaskReport report = reach_task();
-  const TaskDeclaration task = recorded_task(report);
-  EXPECT_EQ(task.trajectory_columns, report.trajectory_columns);
-  EXPECT_EQ(task.error_unit, "mm");
-  EXPECT_EQ(task.error_scale, 1000.0);
-  EXPECT_EQ(task.error_segments, report.error_segments);
-  EXPECT_EQ(task.error_columns, report.error_columns);
-  EXPECT_EQ(task.decision_segment, "reach");
-  EXPECT_EQ(task.decision_labels, (std::vector<std::string>{"b", "a"}));
-  EXPECT_EQ(task.relative_columns, report.relative_columns);
-  EXPECT_EQ(task.plot_horizontal, 1);
-  EXPECT_EQ(task.plot_vertical, 0);
-  EXPECT_EQ(task.outcome_metrics, report.outcome_metrics);
-  EXPECT_EQ(task.failure_categories, report.failure_categories);
-}
-
 // A run of that task recorded as the pipeline records it: the run table's error column is in the
 // task's unit, and its decisions are listed in the task's label order, not the trials' order.
 TEST(RecordedTask, TheReportsShowTheTasksUnitAndLabelOrder) {
@@ -60,7 +41,7 @@ TEST(RecordedTask, TheReportsShowTheTasksUnitAndLabelOrder) {
   run.experiment = "reach_demo";
   run.config = "seed: 0\n";
   run.config_hash = "h";
-  run.task = recorded_task(task);
+  run.task = task;
   const int64_t id = store.begin_run(run);
   std::vector<EvaluatedTrial> evaluated(3);
   std::vector<TrialRecord> trials;
