@@ -106,8 +106,8 @@ TEST(ParallelCnmpStep, UnevenWidthsAndNoContextStayIdentical) {
     a.decoder_layers = decoder_layers;  // 1: the first layer is the output layer
     const Trained one = train(a, 1, 15);
     for (int workers : {2, 3}) {
-      SCOPED_TRACE(testing::Message() << "width " << width << ", " << decoder_layers
-                                      << " decoder layers, " << workers << " workers");
+      SCOPED_TRACE(::testing::Message() << "width " << width << ", " << decoder_layers
+                                        << " decoder layers, " << workers << " workers");
       expect_identical(one, train(a, workers, 15));
     }
   }
@@ -164,7 +164,7 @@ TEST(ParallelCnmpStep, ABorrowedCoreIsGivenBackWhenItsLenderStopsWaiting) {
 TEST(ParallelCnmpStep, ANonFiniteLossLeavesTheWeightsUnchanged) {
   const CnmpArchitecture a = architecture(32, 1);
   for (int workers : {1, 2}) {
-    SCOPED_TRACE(testing::Message() << workers << " workers");
+    SCOPED_TRACE(::testing::Message() << workers << " workers");
     CnmpModel model(a, 3);
     const auto good = waves(a, 4, 20);
     auto bad = good;

@@ -15,7 +15,7 @@ using ::testing::AllOf;
 using ::testing::HasSubstr;
 using ::testing::ThrowsMessage;
 
-Demonstration a_demonstration(double value) {
+Demonstration cached_demonstration(double value) {
   SegmentTrajectory s;
   s.segment = "cor";
   s.x = Eigen::MatrixXd::Random(5, 1);
@@ -32,8 +32,8 @@ Demonstration a_demonstration(double value) {
 TEST(DemonstrationCache, RoundTripsExactly) {
   testing::TempDir dir;
   DemonstrationSplit demos;
-  demos.train = {a_demonstration(1.0), a_demonstration(2.0)};
-  demos.validation = {a_demonstration(3.0)};
+  demos.train = {cached_demonstration(1.0), cached_demonstration(2.0)};
+  demos.validation = {cached_demonstration(3.0)};
   demos.validation[0].segments[0].start.rgb = cv::Mat();
   const std::string path = dir.file("cache/d.bin");
   save_demonstrations(path, demos);
@@ -61,7 +61,7 @@ TEST(DemonstrationCache, RoundTripsExactly) {
 TEST(DemonstrationCache, CorruptFilesAreReportedWithTheirName) {
   testing::TempDir dir;
   DemonstrationSplit demos;
-  demos.train = {a_demonstration(1.0)};
+  demos.train = {cached_demonstration(1.0)};
   const std::string path = dir.file("d.bin");
   save_demonstrations(path, demos);
   {

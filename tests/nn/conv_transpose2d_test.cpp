@@ -27,13 +27,13 @@ std::string describe(const TransposeCase& c) {
          std::to_string(c.height) + "x" + std::to_string(c.width);
 }
 
-std::string case_name(const ::testing::TestParamInfo<TransposeCase>& info) {
+std::string transpose_case_name(const ::testing::TestParamInfo<TransposeCase>& info) {
   return describe(info.param);
 }
 
 void PrintTo(const TransposeCase& c, std::ostream* os) { *os << describe(c); }
 
-constexpr TransposeCase kCases[] = {
+constexpr TransposeCase kTransposeCases[] = {
     {3, 2, 1, 1, 4, 3}, {3, 2, 1, 0, 3, 4}, {3, 1, 1, 0, 4, 4}, {3, 1, 0, 0, 3, 2},
     {2, 2, 0, 0, 3, 3}, {3, 3, 1, 2, 2, 3}, {4, 2, 1, 1, 3, 3},
 };
@@ -133,14 +133,14 @@ TEST_P(ConvTranspose2dFusedRelu, EqualsSeparateRelu) {
   EXPECT_EQ(layer.weight_grad(), weight_grad);
 }
 
-INSTANTIATE_TEST_SUITE_P(StridePadding, ConvTranspose2dFusedRelu, ::testing::ValuesIn(kCases),
-                         case_name);
-INSTANTIATE_TEST_SUITE_P(StridePadding, ConvTranspose2dForward, ::testing::ValuesIn(kCases),
-                         case_name);
-INSTANTIATE_TEST_SUITE_P(StridePadding, ConvTranspose2dGrad, ::testing::ValuesIn(kCases),
-                         case_name);
-INSTANTIATE_TEST_SUITE_P(StridePadding, ConvTranspose2dAdjoint, ::testing::ValuesIn(kCases),
-                         case_name);
+INSTANTIATE_TEST_SUITE_P(StridePadding, ConvTranspose2dFusedRelu,
+                         ::testing::ValuesIn(kTransposeCases), transpose_case_name);
+INSTANTIATE_TEST_SUITE_P(StridePadding, ConvTranspose2dForward,
+                         ::testing::ValuesIn(kTransposeCases), transpose_case_name);
+INSTANTIATE_TEST_SUITE_P(StridePadding, ConvTranspose2dGrad, ::testing::ValuesIn(kTransposeCases),
+                         transpose_case_name);
+INSTANTIATE_TEST_SUITE_P(StridePadding, ConvTranspose2dAdjoint,
+                         ::testing::ValuesIn(kTransposeCases), transpose_case_name);
 
 // Kernel 3, stride 2, padding 1 with 16 channels or more on both sides runs the adjoint of the
 // stride-2 Winograd convolution (nn/winograd_stride2_conv3x3.hpp), with either output padding.

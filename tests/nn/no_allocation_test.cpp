@@ -23,8 +23,9 @@ namespace corrmp::nn {
 namespace {
 
 TEST(NoAllocation, CounterSeesAllocations) {
-  if (!testing::kAllocationCounting) GTEST_SKIP() << "allocation counting is off under sanitizers";
-  const long n = testing::count_allocations([] {
+  if (!corrmp::testing::kAllocationCounting)
+    GTEST_SKIP() << "allocation counting is off under sanitizers";
+  const long n = corrmp::testing::count_allocations([] {
     void* volatile p = std::malloc(64);
     std::free(p);
     Eigen::VectorXf* volatile v = new Eigen::VectorXf(100);
@@ -84,12 +85,13 @@ class CnmpLikeStep {
 };
 
 TEST(NoAllocation, WarmedUpCnmpTrainingStepDoesNotAllocate) {
-  if (!testing::kAllocationCounting) GTEST_SKIP() << "allocation counting is off under sanitizers";
+  if (!corrmp::testing::kAllocationCounting)
+    GTEST_SKIP() << "allocation counting is off under sanitizers";
   Rng rng(90);
   CnmpLikeStep step(rng);
   step.run(8, 8, rng);  // warm-up with the largest batch
   float loss = 0.0f;
-  const long allocations = testing::count_allocations([&] {
+  const long allocations = corrmp::testing::count_allocations([&] {
     for (Index n = 1; n <= 8; ++n) loss += step.run(n, 9 - n, rng);
   });
   EXPECT_EQ(allocations, 0);

@@ -13,7 +13,7 @@ namespace {
 
 using testing::MatD;
 
-struct Shape {
+struct Stride2Shape {
   Index full_channels, half_channels, height, width, batch;
   Index half_height() const { return (height + 1) / 2; }
   Index half_width() const { return (width + 1) / 2; }
@@ -21,18 +21,19 @@ struct Shape {
   Index half_size() const { return half_channels * half_height() * half_width(); }
 };
 
-const Shape kShapes[] = {
+const Stride2Shape kStride2Shapes[] = {
     {3, 4, 10, 12, 2}, {2, 3, 7, 9, 2},  {2, 2, 1, 1, 3},     {2, 3, 2, 3, 2},
     {3, 2, 17, 1, 2},  {4, 5, 9, 16, 1}, {64, 16, 32, 32, 5},  // chunks of 2, 2 and 1 images
 };
 
 // dL/dW (half x full x 3 x 3) and dL/dfull of half = conv(full) for dL/dhalf = dy, by direct loops.
-struct DirectGrads {
+struct Stride2Grads {
   MatD weight, full;
 };
-DirectGrads direct_backward(const Shape& s, const MatD& full, const MatD& dy, const MatD& w) {
-  DirectGrads g{MatD::Zero(s.half_channels, s.full_channels * 9),
-                MatD::Zero(full.rows(), full.cols())};
+Stride2Grads direct_backward(const Stride2Shape& s, const MatD& full, const MatD& dy,
+                             const MatD& w) {
+  Stride2Grads g{MatD::Zero(s.half_channels, s.full_channels * 9),
+                 MatD::Zero(full.rows(), full.cols())};
   const Index H = s.height, W = s.width, h2 = s.half_height(), w2 = s.half_width();
   for (Index n = 0; n < full.rows(); ++n)
     for (Index o = 0; o < s.half_channels; ++o)
@@ -66,7 +67,7 @@ double relative_error(const MatD& got, const MatD& expected) {
 
 TEST(WinogradStride2Conv3x3, ConvolutionMatchesDirectLoops) {
   Rng rng(70);
-  for (const Shape& s : kShapes) {
+  for (const Stride2Shape& s : kStride2Shapes) {
     WinogradStride2Conv3x3<double> conv(s.full_channels, s.half_channels, s.height, s.width);
     const MatD w = testing::random_matrix(s.half_channels, s.full_channels * 9, rng);
     const Vec<double> b = testing::random_matrix(s.half_channels, 1, rng);
@@ -81,7 +82,7 @@ TEST(WinogradStride2Conv3x3, ConvolutionMatchesDirectLoops) {
     MatD dw = MatD::Constant(s.half_channels, s.full_channels * 9, 0.5), dx(s.batch, s.full_size());
     Vec<double> db = Vec<double>::Constant(s.half_channels, 0.5);  // gradients accumulate
     conv.convolve_backward(w.data(), x, dy, dw.data(), db.data(), dx.data(), dx.cols(), false);
-    const DirectGrads g = direct_backward(s, x, dy, w);
+    const Stride2Grads g = direct_backward(s, x, dy, w);
     EXPECT_LE(relative_error((dw.array() - 0.5).matrix(), g.weight), 1e-12) << s.height;
     EXPECT_LE(relative_error((db.array() - 0.5).matrix(), channel_sums(dy, s.half_channels)),
               1e-12);
@@ -93,7 +94,7 @@ TEST(WinogradStride2Conv3x3, ConvolutionMatchesDirectLoops) {
 // adjoint of the convolution with the same weights.
 TEST(WinogradStride2Conv3x3, TransposeMatchesDirectLoops) {
   Rng rng(71);
-  for (const Shape& s : kShapes) {
+  for (const Stride2Shape& s : kStride2Shapes) {
     WinogradStride2Conv3x3<double> conv(s.full_channels, s.half_channels, s.height, s.width);
     const Index output_padding = s.height - (2 * s.half_height() - 1);
     if (s.width - (2 * s.half_width() - 1) != output_padding) continue;  // one padding for both
@@ -112,7 +113,7 @@ TEST(WinogradStride2Conv3x3, TransposeMatchesDirectLoops) {
     conv.convolve_transposed_backward(w.data(), x, dy, dw.data(), db.data(), dx.data(), dx.cols(),
                                       false);
     // The weight gradient of the adjoint is the convolution's with the roles of x and dy swapped.
-    const DirectGrads g = direct_backward(s, dy, x, w);
+    const Stride2Grads g = direct_backward(s, dy, x, w);
     EXPECT_LE(relative_error((dw.array() - 0.5).matrix(), g.weight), 1e-12) << s.height;
     EXPECT_LE(relative_error((db.array() - 0.5).matrix(), channel_sums(dy, s.full_channels)),
               1e-12);
@@ -124,7 +125,7 @@ TEST(WinogradStride2Conv3x3, TransposeMatchesDirectLoops) {
 
 TEST(WinogradStride2Conv3x3, FusedRelus) {
   Rng rng(72);
-  const Shape s{3, 4, 10, 9, 2};
+  const Stride2Shape s{3, 4, 10, 9, 2};
   WinogradStride2Conv3x3<double> conv(s.full_channels, s.half_channels, s.height, s.width);
   const MatD w = testing::random_matrix(s.half_channels, s.full_channels * 9, rng);
   const Vec<double> b_half = testing::random_matrix(s.half_channels, 1, rng);
@@ -164,7 +165,7 @@ TEST(WinogradStride2Conv3x3, FusedRelus) {
 // loops with the weights of the moment; an empty batch changes nothing.
 TEST(WinogradStride2Conv3x3, ReusedOnOtherBatchesAndChangedWeights) {
   Rng rng(74);
-  const Shape s{3, 4, 13, 11, 0};
+  const Stride2Shape s{3, 4, 13, 11, 0};
   WinogradStride2Conv3x3<double> conv(s.full_channels, s.half_channels, s.height, s.width);
   MatD w = testing::random_matrix(s.half_channels, s.full_channels * 9, rng);
   const Vec<double> b = testing::random_matrix(s.half_channels, 1, rng);
@@ -181,7 +182,7 @@ TEST(WinogradStride2Conv3x3, ReusedOnOtherBatchesAndChangedWeights) {
     MatD dw = MatD::Zero(w.rows(), w.cols()), dx(batch, s.full_size());
     Vec<double> db = Vec<double>::Zero(s.half_channels);
     conv.convolve_backward(w.data(), x, dy, dw.data(), db.data(), dx.data(), dx.cols(), false);
-    const DirectGrads g = direct_backward(s, x, dy, w);
+    const Stride2Grads g = direct_backward(s, x, dy, w);
     EXPECT_LE(relative_error(dw, g.weight), 1e-12) << batch;
     EXPECT_LE(relative_error(dx, g.full), 1e-12) << batch;
   }
@@ -199,11 +200,11 @@ TEST(WinogradStride2Conv3x3, ReusedOnOtherBatchesAndChangedWeights) {
 // the autoencoder's sizes, and channel counts and sizes off the 16-lane blocks in two chunks.
 TEST(WinogradStride2Conv3x3, FloatAgreesWithDouble) {
   Rng rng(73);
-  const Shape shapes[] = {{32, 64, 32, 32, 2}, {64, 64, 16, 16, 3}, {20, 17, 13, 11, 11}};
+  const Stride2Shape shapes[] = {{32, 64, 32, 32, 2}, {64, 64, 16, 16, 3}, {20, 17, 13, 11, 11}};
   const auto close = [](const auto& f, const auto& d) {
     return (f.template cast<double>() - d).cwiseAbs().maxCoeff() <= 1e-5 * d.cwiseAbs().maxCoeff();
   };
-  for (const Shape& s : shapes) {
+  for (const Stride2Shape& s : shapes) {
     WinogradStride2Conv3x3<double> cd(s.full_channels, s.half_channels, s.height, s.width);
     WinogradStride2Conv3x3<float> cf(s.full_channels, s.half_channels, s.height, s.width);
     const MatD w = testing::random_matrix(s.half_channels, s.full_channels * 9, rng, -0.06, 0.06);

@@ -25,7 +25,7 @@ using testing::ToolOutcome;
 
 // Sweep "s1" over seeds: corridor_pc (4 and 3 of 4 trials) and corridor_mono
 // (1 and 2 of 4); no run records a directory.
-void record_runs(const TempDir& dir) {
+void record_figure_runs(const TempDir& dir) {
   ResultStore store(dir.file("r.sqlite"));
   testing::add_sweep(store, "s1", "paper", 4);
   int job = 0;
@@ -44,7 +44,7 @@ void record_runs(const TempDir& dir) {
 
 TEST(ReportFiguresTool, PlotsSuccessPerExperimentWithItsNumbers) {
   TempDir dir;
-  record_runs(dir);
+  record_figure_runs(dir);
   const ToolOutcome plotted =
       report_tool(dir, "--plot-success experiment --sweep s1 --out " + dir.file("plots"));
   ASSERT_EQ(plotted.exit_code, 0) << plotted.err;
@@ -60,7 +60,7 @@ TEST(ReportFiguresTool, PlotsSuccessPerExperimentWithItsNumbers) {
 
 TEST(ReportFiguresTool, RefusesASettingNoRunHasAndAPlotWithoutAFolder) {
   TempDir dir;
-  record_runs(dir);
+  record_figure_runs(dir);
   const ToolOutcome unknown =
       report_tool(dir, "--plot-success policy.nope --sweep s1 --out " + dir.file("plots"));
   EXPECT_EQ(unknown.exit_code, 2);
@@ -73,7 +73,7 @@ TEST(ReportFiguresTool, RefusesASettingNoRunHasAndAPlotWithoutAFolder) {
 
 TEST(ReportFiguresTool, TheReproductionListsItsFiguresAndWhatIsMissing) {
   TempDir dir;
-  record_runs(dir);
+  record_figure_runs(dir);
   const ToolOutcome written =
       report_tool(dir, "--reproduction --sweep s1 --out " + dir.file("reproduction"));
   ASSERT_EQ(written.exit_code, 0) << written.err;

@@ -10,6 +10,7 @@
 
 #include "config/test_files.hpp"
 #include "support/recorded_runs.hpp"
+#include "support/report_tool.hpp"
 
 namespace corrmp {
 namespace {
@@ -163,10 +164,7 @@ TEST(RunReport, AppendsReferenceRowsWithTheirErrorColumns) {
       << markdown;
 }
 
-struct ToolOutcome {
-  int exit_code = -1;
-  std::string out, err;
-};
+using testing::ToolOutcome;
 
 ToolOutcome run_report_tool(const TempDir& dir, const std::string& args) {
   const std::string out = dir.file("out.txt"), err = dir.file("err.txt");

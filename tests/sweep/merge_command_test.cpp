@@ -21,7 +21,7 @@ namespace {
 namespace fs = std::filesystem;
 using testing::TempDir;
 
-struct Outcome {
+struct MergeOutcome {
   int exit_code;
   std::string out;
   double seconds;
@@ -34,7 +34,7 @@ std::string bytes_of(const std::string& path) {
   return text.str();
 }
 
-Outcome merge(const TempDir& dir, const std::string& shards, const std::string& db) {
+MergeOutcome merge(const TempDir& dir, const std::string& shards, const std::string& db) {
   const std::string log = dir.file("merge.txt");
   const std::string command =
       std::string(RUN_EXPERIMENT_BIN) + " merge " + shards + " --db " + db + " >" + log + " 2>&1";
@@ -87,7 +87,7 @@ TEST(MergeCommand, AShardThatIsNotAResultDatabaseMergesNothingAndIsLeftAsItWas) 
   }
   const std::string before = bytes_of(foreign);
   const std::string target = dir.file("t.sqlite");
-  const Outcome outcome = merge(dir, good + " " + foreign, target);
+  const MergeOutcome outcome = merge(dir, good + " " + foreign, target);
   EXPECT_EQ(outcome.exit_code, 2) << outcome.out;
   EXPECT_EQ(lines(outcome.out), 1) << outcome.out;
   EXPECT_EQ(outcome.out, "run_experiment merge: " + foreign +
@@ -112,7 +112,7 @@ TEST(MergeCommand, AShardWithADamagedPageIsNamedAndNothingIsMerged) {
   }
   const std::string before = bytes_of(damaged);
   const std::string target = dir.file("t.sqlite");
-  const Outcome outcome = merge(dir, good + " " + damaged, target);
+  const MergeOutcome outcome = merge(dir, good + " " + damaged, target);
   EXPECT_EQ(outcome.exit_code, 2) << outcome.out;
   EXPECT_EQ(lines(outcome.out), 1) << outcome.out;
   EXPECT_EQ(outcome.out.rfind("run_experiment merge: " + damaged + ": ", 0), 0u) << outcome.out;
@@ -139,7 +139,7 @@ TEST(MergeCommand, ShardsAreOnlyReadNeverChanged) {
   const std::string before = bytes_of(old);
   const std::string target = dir.file("t.sqlite");
   for (int merges = 0; merges < 2; ++merges) {
-    const Outcome outcome = merge(dir, old, target);
+    const MergeOutcome outcome = merge(dir, old, target);
     ASSERT_EQ(outcome.exit_code, 0) << outcome.out;
     EXPECT_TRUE(bytes_of(old) == before) << "the old shard was changed by merge " << merges;
     EXPECT_FALSE(fs::exists(old + "-wal"));
@@ -150,7 +150,7 @@ TEST(MergeCommand, ShardsAreOnlyReadNeverChanged) {
   const std::string truncated = make_shard(dir, "truncated.sqlite", 200, 1000);
   fs::resize_file(truncated, 2 * 4096);
   const std::string cut = bytes_of(truncated);
-  const Outcome refused = merge(dir, truncated, target);
+  const MergeOutcome refused = merge(dir, truncated, target);
   EXPECT_EQ(refused.exit_code, 2) << refused.out;
   EXPECT_EQ(lines(refused.out), 1) << refused.out;
   EXPECT_NE(refused.out.find(truncated + ": "), std::string::npos) << refused.out;
@@ -168,7 +168,7 @@ TEST(MergeCommand, MergingIntoOneOfTheShardsIsRefusedAtOnce) {
   const std::string before = bytes_of(shard);
   for (const std::string& target :
        {shard, dir.file("sub/../a.sqlite"), dir.file("./a.sqlite"), dir.file("link.sqlite")}) {
-    const Outcome outcome = merge(dir, other + " " + shard, target);
+    const MergeOutcome outcome = merge(dir, other + " " + shard, target);
     EXPECT_EQ(outcome.exit_code, 2) << target << ": " << outcome.out;
     EXPECT_EQ(outcome.out, "run_experiment merge: " + shard +
                                ": is the database being merged into (" + target +
@@ -188,7 +188,7 @@ TEST(MergeCommand, AMergeTheTargetRefusesLeavesNoNewTargetBehind) {
   const std::string refused = dir.file("refused.sqlite");
   testing::write_shard_the_target_refuses(refused);
   const std::string target = dir.file("new/t.sqlite");
-  const Outcome outcome = merge(dir, good + " " + refused, target);
+  const MergeOutcome outcome = merge(dir, good + " " + refused, target);
   EXPECT_EQ(outcome.exit_code, 2) << outcome.out;
   EXPECT_EQ(lines(outcome.out), 1) << outcome.out;
   EXPECT_EQ(outcome.out.rfind("run_experiment merge: " + target + ": ", 0), 0u) << outcome.out;
@@ -203,7 +203,7 @@ TEST(MergeCommand, ATargetBelowAFileIsRefusedNamingThePath) {
   TempDir dir;
   const std::string shard = make_shard(dir, "a.sqlite");
   const std::string file = dir.write("afile", "in the way\n");
-  const Outcome outcome = merge(dir, shard, file + "/x.sqlite");
+  const MergeOutcome outcome = merge(dir, shard, file + "/x.sqlite");
   EXPECT_EQ(outcome.exit_code, 2) << outcome.out;
   EXPECT_EQ(outcome.out, "run_experiment merge: " + file + "/x.sqlite: cannot make its folder: '" +
                              file + "' is a file, not a folder\n");

@@ -165,7 +165,7 @@ TEST(AutoencoderParams, DefaultsAreThePapersAndConfigIsStrict) {
   EXPECT_THROW(ConfigReader::read(typo, "context", p), ConfigError);
 }
 
-std::string temp_path(const std::string& name) { return ::testing::TempDir() + name; }
+std::string scratch_file(const std::string& name) { return ::testing::TempDir() + name; }
 
 TEST(ConvAutoencoder, ModelFileRoundTripGivesIdenticalLatents) {
   AutoencoderArchitecture a = tiny_architecture(8);
@@ -174,7 +174,7 @@ TEST(ConvAutoencoder, ModelFileRoundTripGivesIdenticalLatents) {
   ConvAutoencoder<float> model(a, init);
   std::mt19937_64 rng(9);
   const nn::Mat<float> images = random_images(4, model.image_values(), rng).cast<float>();
-  const std::string path = temp_path("autoencoder_round_trip.cmpm");
+  const std::string path = scratch_file("autoencoder_round_trip.cmpm");
   save_autoencoder(model, path);
   ConvAutoencoder<float> loaded = load_autoencoder(path);
   EXPECT_EQ(loaded.architecture(), a);

@@ -11,8 +11,6 @@
 namespace corrmp {
 namespace {
 
-constexpr double kPi = 3.14159265358979323846;
-
 // Signed volume by the divergence theorem: positive for a closed, outward-wound mesh.
 double signed_volume(const TriangleMesh& mesh) {
   double volume = 0.0;
@@ -52,7 +50,7 @@ TEST(UnitMeshes, BoxIsTheClosedCubeOfSide2) {
 TEST(UnitMeshes, CylinderIsClosedAndApproachesPiTimes2) {
   const TriangleMesh cylinder = unit_cylinder_mesh(16);
   // A regular 16-gon of circumradius 1 has area 8 sin(2 pi / 16).
-  EXPECT_NEAR(signed_volume(cylinder), 2.0 * 8.0 * std::sin(2.0 * kPi / 16.0), 1e-4);
+  EXPECT_NEAR(signed_volume(cylinder), 2.0 * 8.0 * std::sin(2.0 * EIGEN_PI / 16.0), 1e-4);
   expect_consistent_normals(cylinder);
   EXPECT_EQ(unit_tube_mesh(16).positions.size(), 16u * 6u);
 }
@@ -61,8 +59,8 @@ TEST(UnitMeshes, SphereAndHemispheresLieOnTheUnitSphere) {
   const TriangleMesh sphere = unit_sphere_mesh(16);
   expect_consistent_normals(sphere);
   const double volume = signed_volume(sphere);
-  EXPECT_GT(volume, 0.85 * 4.0 / 3.0 * kPi);
-  EXPECT_LT(volume, 4.0 / 3.0 * kPi);
+  EXPECT_GT(volume, 0.85 * 4.0 / 3.0 * EIGEN_PI);
+  EXPECT_LT(volume, 4.0 / 3.0 * EIGEN_PI);
   for (const Eigen::Vector3f& p : sphere.positions) EXPECT_NEAR(p.norm(), 1.0f, 1e-5f);
 
   const TriangleMesh hemisphere = unit_hemisphere_mesh(16);
