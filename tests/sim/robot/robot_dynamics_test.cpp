@@ -135,6 +135,33 @@ TEST(RobotDynamics, FoldingTheArmOntoItselfIsASelfCollision) {
   EXPECT_EQ(robot.check(), "");
 }
 
+TEST(RobotDynamics, LinksOverlappingAtZeroOrListedAreNoSelfCollision) {
+  RobotModel model = test::seven_joint_arm();
+  // A housing around joint2 on link1 that reaches into link3 at q = 0.
+  RobotShape housing;
+  housing.kind = RobotShape::Kind::sphere;
+  housing.size = Eigen::Vector3d(0.21, 0, 0);
+  housing.origin.translation() = Eigen::Vector3d(0, 0, 0.15);
+  model.links[1].collisions.push_back(housing);
+  RobotDynamics robot(model, RobotDynamicsParams{});
+  for (int tick = 0; tick < 10; ++tick) robot.step();
+  EXPECT_EQ(robot.check(), "") << robot.failure_detail();
+
+  // The wrist folded back: link7 onto link5, unless that pair is listed.
+  Eigen::VectorXd wrist = Eigen::VectorXd::Zero(robot.dof());
+  wrist[5] = 2.6;
+  for (bool allowed : {false, true}) {
+    RobotDynamics folded(
+        test::seven_joint_arm(), RobotDynamicsParams{}, Eigen::Isometry3d::Identity(),
+        allowed ? std::vector<std::pair<std::string, std::string>>{{"link7", "link5"}}
+                : std::vector<std::pair<std::string, std::string>>{});
+    folded.reset(wrist);
+    folded.set_targets(wrist);
+    folded.step();
+    EXPECT_EQ(folded.check(), allowed ? "" : "self collision") << folded.failure_detail();
+  }
+}
+
 TEST(RobotDynamics, TargetsBeyondTheLimitsAreClampedAndReported) {
   RobotDynamics robot(test::three_joint_arm(), RobotDynamicsParams{});
   Eigen::VectorXd q = Eigen::VectorXd::Zero(robot.dof());
