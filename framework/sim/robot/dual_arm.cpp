@@ -3,6 +3,7 @@
 
 #include <fmt/format.h>
 
+#include <algorithm>
 #include <chrono>
 #include <filesystem>
 
@@ -23,6 +24,19 @@ std::string resolve_urdf(const std::string& path) {
 
 const char* arm_name(Arm arm) { return arm == Arm::left ? "left" : "right"; }
 
+// `top` and the links below it, through fixed joints only when `fixed_only`,
+// in model order.
+std::vector<std::string> links_below(const RobotModel& model, const std::string& top,
+                                     bool fixed_only) {
+  std::vector<std::string> links{top};
+  for (const RobotJoint& joint : model.joints) {
+    if (fixed_only && joint.type != JointType::fixed) continue;
+    if (std::find(links.begin(), links.end(), joint.parent) != links.end())
+      links.push_back(joint.child);
+  }
+  return links;
+}
+
 const char* category_of(IkResult::Status status) {
   return status == IkResult::Status::joint_limit ? "joint limit" : "out of reach";
 }
@@ -40,6 +54,7 @@ struct DualArm::ArmState {
   std::vector<int> joints;   // index of each arm joint in the robot's joint vector
   Eigen::VectorXd solution;  // the last IK solution: the next warm start
   Eigen::Matrix3d orientation = Eigen::Matrix3d::Identity();  // tool to world
+  std::vector<std::string> links, hand;
 };
 
 DualArm::DualArm(const DualArmParams& params, double time_step) : params_(params) {
@@ -86,6 +101,13 @@ DualArm::DualArm(const DualArmParams& params, double time_step) : params_(params
       }
       state->joints.push_back(dynamics_->joint_index(joint));
     }
+    const std::vector<int> chain = model_.chain(params.base_link, *tools[a]);
+    std::vector<int> movable;
+    for (int j : chain)
+      if (model_.joints[j].type != JointType::fixed) movable.push_back(j);
+    state->links = links_below(model_, model_.joints[movable.front()].child, false);
+    state->hand = links_below(model_, model_.joints[movable.back()].child, true);
+    state->hand.erase(state->hand.begin());
     arms_[a] = std::move(state);
   }
   reset();
@@ -110,6 +132,28 @@ void DualArm::reset() {
 
 void DualArm::set_tool_orientation(Arm arm, const Eigen::Matrix3d& orientation) {
   arms_[static_cast<int>(arm)]->orientation = orientation;
+}
+
+std::string DualArm::place_tool(Arm arm, const Eigen::Vector3d& position) {
+  ArmState& state = *arms_[static_cast<int>(arm)];
+  Eigen::Isometry3d target = Eigen::Isometry3d::Identity();
+  target.linear() = state.orientation;
+  target.translation() = position;
+  const IkResult result = state.kinematics.solve(
+      dynamics_->link_pose(params_.base_link).inverse() * target, state.solution);
+  if (result.status != IkResult::Status::ok) {
+    failure_detail_ = fmt::format(
+        "{} arm: no joint positions for the tool at ({:.3f}, {:.3f}, "
+        "{:.3f}) m ({})",
+        arm_name(arm), position.x(), position.y(), position.z(), to_string(result.status));
+    return category_of(result.status);
+  }
+  Eigen::VectorXd q = dynamics_->targets();
+  for (size_t j = 0; j < state.joints.size(); ++j) q[state.joints[j]] = result.q[j];
+  dynamics_->reset(q);
+  state.solution = result.q;
+  failure_detail_.clear();
+  return "";
 }
 
 std::string DualArm::track(const Eigen::Vector3d& left_target,
@@ -150,6 +194,14 @@ std::string DualArm::track(const Eigen::Vector3d& left_target,
 
 Eigen::Isometry3d DualArm::tool_pose(Arm arm) const {
   return dynamics_->link_pose(arms_[static_cast<int>(arm)]->tool);
+}
+
+const std::vector<std::string>& DualArm::arm_links(Arm arm) const {
+  return arms_[static_cast<int>(arm)]->links;
+}
+
+const std::vector<std::string>& DualArm::hand_links(Arm arm) const {
+  return arms_[static_cast<int>(arm)]->hand;
 }
 
 std::vector<PlacedShape> DualArm::shapes() const {

@@ -59,7 +59,7 @@ struct DualArmParams {
 // A collision shape of the robot at its executed pose, for a task's world.
 struct PlacedShape {
   std::string link;
-  RobotShape shape;         // shape.origin is the shape's pose in the world
+  RobotShape shape;  // shape.origin is the shape's pose in the world
 };
 
 class DualArm {
@@ -74,6 +74,10 @@ class DualArm {
   void reset();
   // The orientation (tool frame to world) the IK holds for an arm's tool.
   void set_tool_orientation(Arm arm, const Eigen::Matrix3d& orientation);
+  // Puts an arm's tool at `position` (world frame, the arm's tool orientation)
+  // at once, the robot at rest there: IK from the arm's last solution. Returns
+  // the failure category, "" when placed (else nothing moves).
+  std::string place_tool(Arm arm, const Eigen::Vector3d& position);
 
   // One tick: IK for both tool targets (world frame), joint targets, one
   // physics step. Returns the failure category of the tick, "" when fine;
@@ -85,6 +89,11 @@ class DualArm {
   Eigen::Vector3d tool_position(Arm arm) const { return tool_pose(arm).translation(); }
   // Every collision shape of the robot at its executed pose (world frame).
   std::vector<PlacedShape> shapes() const;
+  // The links an arm's joints move (its links, hand and tool frame), and of
+  // those the hand: the links fixed below its last joint (gripper, fingers,
+  // tool frame), whose shapes a task leaves out where its own gripper stands in.
+  const std::vector<std::string>& arm_links(Arm arm) const;
+  const std::vector<std::string>& hand_links(Arm arm) const;
 
   const std::string& failure_detail() const { return failure_detail_; }
 

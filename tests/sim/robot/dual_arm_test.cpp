@@ -106,6 +106,31 @@ TEST(DualArm, SameSequenceInFreshArmsIsBitIdentical) {
   EXPECT_EQ(first.second, second.second);
 }
 
+TEST(DualArm, PlaceToolPutsTheToolThereAtRestOrLeavesTheArm) {
+  DualArm arm(DualArmParams{}, kTick);
+  arm.set_tool_orientation(Arm::right, pointing_down());
+  const Eigen::Vector3d start(0.45, -0.285, 0.07);
+  ASSERT_EQ(arm.place_tool(Arm::right, start), "") << arm.failure_detail();
+  EXPECT_LT((arm.tool_position(Arm::right) - start).norm(), IkParams{}.position_tolerance);
+  const Eigen::Vector3d placed = arm.tool_position(Arm::right);
+  EXPECT_EQ(arm.place_tool(Arm::right, {2.0, -0.2, 0.3}), "out of reach");
+  EXPECT_EQ(arm.tool_position(Arm::right), placed);
+  // At rest there: holding the target keeps the tool within a tenth of a millimetre.
+  for (int tick = 0; tick < 60; ++tick)
+    ASSERT_EQ(arm.track(arm.tool_position(Arm::left), start), "");
+  EXPECT_LT((arm.tool_position(Arm::right) - placed).norm(), 1e-4);
+}
+
+TEST(DualArm, NamesEachArmsLinksAndItsHand) {
+  DualArm arm(DualArmParams{}, kTick);
+  EXPECT_EQ(arm.hand_links(Arm::right), (std::vector<std::string>{"right_gripper", "right_finger_1",
+                                                                  "right_finger_2", "right_tool"}));
+  const std::vector<std::string>& links = arm.arm_links(Arm::left);
+  ASSERT_EQ(links.size(), 11u);
+  EXPECT_EQ(links.front(), "left_link_1");
+  EXPECT_EQ(links.back(), "left_tool");
+}
+
 TEST(DualArm, UnusableConfigurationIsAConfigErrorNamingIt) {
   DualArmParams missing;
   missing.urdf = "assets/robots/no_such_robot.urdf";
