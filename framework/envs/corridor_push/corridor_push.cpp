@@ -6,7 +6,9 @@
 #include <algorithm>
 #include <filesystem>
 
+#include "core/config/config_error.hpp"
 #include "core/parameter_error.hpp"
+#include "sim/robot/arm_gripper.hpp"
 
 namespace corrmp {
 
@@ -42,6 +44,18 @@ SceneDescription load_task_scene(const std::string& configured) {
   return scene;
 }
 
+// The tool pointing down (tool z = world -z), its fingers closing along world x.
+Eigen::Matrix3d fingers_down() { return Eigen::Vector3d(1.0, -1.0, -1.0).asDiagonal(); }
+
+// A robot that cannot be built from the config is refused naming the key.
+std::unique_ptr<DualArm> robot_at(const RobotParams& params, double time_step) {
+  try {
+    return std::make_unique<DualArm>(params.dual_arm, time_step);
+  } catch (const ConfigError& e) {
+    throw ParameterError("robot", e.what());
+  }
+}
+
 }  // namespace
 
 CorridorPush::CorridorPush(const CorridorPushParams& params)
@@ -68,6 +82,10 @@ TaskReport CorridorPush::report() const {
   report.decision_labels = {"push", "none", "pull"};
   report.plot_horizontal = 1;  // top view: y to the right, x up
   report.plot_vertical = 0;
+  if (params_.robot.on_arms()) {
+    report.failure_categories = {"out of reach", "joint limit", "self collision", "tracking error",
+                                 "physics fault"};
+  }
   return report;
 }
 
@@ -83,6 +101,7 @@ Scenario CorridorPush::sample_scenario(Rng& rng) const {
 void CorridorPush::reset(const Scenario& scenario) {
   scenario_ = scenario;
   gripper_.reset();
+  robot_.reset();
   world_ = std::make_unique<BulletWorld>(params_.physics);
   SceneDescription scene = scene_;
   for (auto& body : scene.bodies) {
@@ -97,9 +116,18 @@ void CorridorPush::reset(const Scenario& scenario) {
   object_ = world_->find("object");
   wall_left_ = world_->find("corridor_left");
   wall_right_ = world_->find("corridor_right");
-  gripper_ = std::make_unique<KinematicGripper>(*world_, params_.gripper, start_position());
   touched_corridor_ = false;
   failure_.clear();
+  if (params_.robot.on_arms()) {
+    // A fresh robot every reset, as the world is, so every trial replays alike.
+    robot_ = robot_at(params_.robot, params_.physics.time_step);
+    const Arm arm = params_.robot.driving_arm();
+    robot_->set_tool_orientation(arm, fingers_down());
+    failure_ = robot_->place_tool(arm, start_position());
+    gripper_ = std::make_unique<ArmGripper>(*world_, params_.gripper, *robot_, arm);
+  } else {
+    gripper_ = std::make_unique<KinematicGripper>(*world_, params_.gripper, start_position());
+  }
   for (int i = 0; i < params_.settle_ticks; ++i) world_->step();
 }
 
