@@ -188,17 +188,25 @@ Observation CorridorPush::observe(bool with_image) {
 }
 
 Outcome CorridorPush::outcome() const {
-  if (!failure_.empty()) return {false, failure_, {}, {}};
-  if (touched_corridor_) return {false, "the object touched the corridor", {}, {}};
-  const Eigen::Vector3d object = object_position();
-  if (object.y() <= corridor_mid_y()) {
-    return {false,
-            fmt::format("the object stopped {:.1f} cm before the corridor's midpoint",
-                        100 * (corridor_mid_y() - object.y())),
-            {},
-            {}};
+  Outcome outcome{true, "", {}, {}};
+  if (!failure_.empty()) {
+    outcome = {false, failure_, {}, {}};
+  } else if (touched_corridor_) {
+    outcome = {false, "the object touched the corridor", {}, {}};
+  } else if (object_position().y() <= corridor_mid_y()) {
+    outcome = {false,
+               fmt::format("the object stopped {:.1f} cm before the corridor's midpoint",
+                           100 * (corridor_mid_y() - object_position().y())),
+               {},
+               {}};
   }
-  return {true, "", {}, {}};
+  if (robot_) {
+    // Deterministic robot figures kept with the trial (the IK's wall time is not).
+    outcome.details["max_tracking_error"] = robot_->max_tracking_error();
+    outcome.details["ik_solves"] = static_cast<double>(robot_->ik_stats().solves);
+    outcome.details["ik_failures"] = static_cast<double>(robot_->ik_stats().failures);
+  }
+  return outcome;
 }
 
 std::string CorridorPush::classify_decision(const Eigen::MatrixXd& trajectory) const {

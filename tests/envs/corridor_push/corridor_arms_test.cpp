@@ -39,6 +39,9 @@ TEST(CorridorOnArms, TheExpertSucceedsThroughTheArmWhichLagsTheCommandByMillimet
   EXPECT_LT(gap, 0.003);
   EXPECT_GT(env.robot()->ik_stats().solves, 1000);
   EXPECT_EQ(env.robot()->ik_stats().failures, 0);
+  EXPECT_EQ(outcome.details.at("ik_solves"), env.robot()->ik_stats().solves);
+  EXPECT_GT(outcome.details.at("max_tracking_error"), 0.0);
+  EXPECT_TRUE(CorridorPush{CorridorPushParams{}}.outcome().details.empty());
 }
 
 TEST(CorridorOnArms, ATrialReplaysBitIdentically) {
