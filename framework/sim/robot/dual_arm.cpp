@@ -5,6 +5,8 @@
 
 #include <chrono>
 #include <filesystem>
+#include <utility>
+#include <vector>
 
 #include "core/config/config_error.hpp"
 
@@ -60,7 +62,13 @@ DualArm::DualArm(const DualArmParams& params, double time_step) : params_(params
   root.translation() =
       Eigen::Vector3d(params.base_position[0], params.base_position[1], params.base_position[2]);
   try {
-    dynamics_ = std::make_unique<RobotDynamics>(model_, control, root);
+    std::vector<std::pair<std::string, std::string>> allowed;
+    const std::vector<std::string>& touching = params.touching_links;
+    for (size_t i = 0; i < touching.size(); ++i) {
+      for (size_t j = i + 1; j < touching.size(); ++j)
+        allowed.emplace_back(touching[i], touching[j]);
+    }
+    dynamics_ = std::make_unique<RobotDynamics>(model_, control, root, allowed);
   } catch (const std::invalid_argument& e) {
     throw ConfigError(fmt::format("{}: {}", params.urdf, e.what()));
   }

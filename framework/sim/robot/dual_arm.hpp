@@ -41,6 +41,8 @@ struct DualArmParams {
   std::vector<double> right_home{0.33, 1.08, -0.72, 1.74, 1.80, -0.99, 1.08};
   IkParams ik;
   RobotDynamicsParams control;  // its time_step is replaced by the task's
+  // Links that may touch one another without a self collision (every pair of them).
+  std::vector<std::string> touching_links;
 
   template <class Fields>
   void describe(Fields& f) {
@@ -53,6 +55,8 @@ struct DualArmParams {
     f("right_home", right_home, "right arm joint positions at reset (rad)");
     f("ik", ik, "inverse kinematics");
     f("control", control, "joint control and its failure bounds");
+    f("touching_links", touching_links,
+      "links that may touch one another (every pair of them is no self collision)");
   }
 };
 
