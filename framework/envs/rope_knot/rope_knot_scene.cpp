@@ -244,24 +244,36 @@ void RopeKnotScene::reset_arms(const Scenario& scenario, const Eigen::Vector3d& 
   arms_ = std::make_unique<DualArm>(arm, world_->time_step());
   arms_->set_tool_orientation(Arm::left, side_grasp());
   arms_->set_tool_orientation(Arm::right, top_grasp());
-  left_target_ = left;
-  right_target_ = right;
-  // From home to the start positions before the rope is held (the home poses
-  // are the start's for the configured base, so this takes no tick there).
-  const double tolerance = 2.0 * params_.robot.arm.ik.position_tolerance;
+  arm_failure_ = arms_->reach(left, right);
+  if (!arm_failure_.empty()) {
+    fault_ = arm_failure_;
+    return;
+  }
+  // From home to the start positions at the grippers' speed before the rope
+  // is held (the home poses are the start's for the configured base, so this
+  // takes no tick there).
+  left_target_ = arms_->tool_position(Arm::left);
+  right_target_ = arms_->tool_position(Arm::right);
+  const double reach = params_.gripper.max_speed * world_->time_step();
+  const double tolerance = 2.0 * arm.ik.position_tolerance;
   const int most = static_cast<int>(std::lround(kArmTransitTime / world_->time_step()));
   for (int t = 0; t < most; ++t) {
     if ((arms_->tool_position(Arm::left) - left).norm() < tolerance &&
         (arms_->tool_position(Arm::right) - right).norm() < tolerance) {
       break;
     }
-    const std::string failure = arms_->track(left, right);
+    const Eigen::Vector3d dl = left - left_target_, dr = right - right_target_;
+    left_target_ += dl.norm() > reach ? (dl * (reach / dl.norm())).eval() : dl;
+    right_target_ += dr.norm() > reach ? (dr * (reach / dr.norm())).eval() : dr;
+    const std::string failure = arms_->track(left_target_, right_target_);
     if (!failure.empty()) {
       arm_failure_ = fmt::format("{}: {}", failure, arms_->failure_detail());
       fault_ = arm_failure_;
       return;
     }
   }
+  left_target_ = left;
+  right_target_ = right;
 }
 
 Eigen::Vector3d RopeKnotScene::left_point() const {

@@ -156,6 +156,25 @@ std::string DualArm::track(const Eigen::Vector3d& left_target,
   return dynamics_->check();
 }
 
+std::string DualArm::reach(const Eigen::Vector3d& left_target,
+                           const Eigen::Vector3d& right_target) const {
+  const Eigen::Isometry3d base_inverse = dynamics_->link_pose(params_.base_link).inverse();
+  for (Arm arm : {Arm::left, Arm::right}) {
+    const ArmState& state = *arms_[static_cast<int>(arm)];
+    Eigen::Isometry3d target = Eigen::Isometry3d::Identity();
+    target.linear() = state.orientation;
+    target.translation() = arm == Arm::left ? left_target : right_target;
+    const IkResult result = state.kinematics.solve(base_inverse * target, state.solution);
+    if (result.status != IkResult::Status::ok) {
+      const Eigen::Vector3d& p = target.translation();
+      return fmt::format(
+          "{}: {} arm: no joint positions for the tool at ({:.3f}, {:.3f}, {:.3f}) m",
+          category_of(result.status), arm_name(arm), p.x(), p.y(), p.z());
+    }
+  }
+  return "";
+}
+
 Eigen::Isometry3d DualArm::tool_pose(Arm arm) const {
   return dynamics_->link_pose(arms_[static_cast<int>(arm)]->tool);
 }

@@ -84,6 +84,11 @@ class DualArm {
   // failure_detail() says more.
   std::string track(const Eigen::Vector3d& left_target, const Eigen::Vector3d& right_target);
 
+  // Whether inverse kinematics (from the last solutions) finds joint positions
+  // for both tool targets, without moving: "" when it does, else
+  // "<category>: <detail>" with the category track() would return.
+  std::string reach(const Eigen::Vector3d& left_target, const Eigen::Vector3d& right_target) const;
+
   // The executed tool pose (world frame).
   Eigen::Isometry3d tool_pose(Arm arm) const;
   Eigen::Vector3d tool_position(Arm arm) const { return tool_pose(arm).translation(); }
