@@ -6,6 +6,8 @@
 #include <algorithm>
 #include <chrono>
 #include <filesystem>
+#include <utility>
+#include <vector>
 
 #include "core/config/config_error.hpp"
 
@@ -75,7 +77,13 @@ DualArm::DualArm(const DualArmParams& params, double time_step) : params_(params
   root.translation() =
       Eigen::Vector3d(params.base_position[0], params.base_position[1], params.base_position[2]);
   try {
-    dynamics_ = std::make_unique<RobotDynamics>(model_, control, root);
+    std::vector<std::pair<std::string, std::string>> allowed;
+    const std::vector<std::string>& touching = params.touching_links;
+    for (size_t i = 0; i < touching.size(); ++i) {
+      for (size_t j = i + 1; j < touching.size(); ++j)
+        allowed.emplace_back(touching[i], touching[j]);
+    }
+    dynamics_ = std::make_unique<RobotDynamics>(model_, control, root, allowed);
   } catch (const std::invalid_argument& e) {
     throw ConfigError(fmt::format("{}: {}", params.urdf, e.what()));
   }
@@ -190,6 +198,25 @@ std::string DualArm::track(const Eigen::Vector3d& left_target,
       max_tracking_error_, (dynamics_->positions() - dynamics_->targets()).cwiseAbs().maxCoeff());
   failure_detail_ = dynamics_->failure_detail();
   return dynamics_->check();
+}
+
+std::string DualArm::reach(const Eigen::Vector3d& left_target,
+                           const Eigen::Vector3d& right_target) const {
+  const Eigen::Isometry3d base_inverse = dynamics_->link_pose(params_.base_link).inverse();
+  for (Arm arm : {Arm::left, Arm::right}) {
+    const ArmState& state = *arms_[static_cast<int>(arm)];
+    Eigen::Isometry3d target = Eigen::Isometry3d::Identity();
+    target.linear() = state.orientation;
+    target.translation() = arm == Arm::left ? left_target : right_target;
+    const IkResult result = state.kinematics.solve(base_inverse * target, state.solution);
+    if (result.status != IkResult::Status::ok) {
+      const Eigen::Vector3d& p = target.translation();
+      return fmt::format(
+          "{}: {} arm: no joint positions for the tool at ({:.3f}, {:.3f}, {:.3f}) m",
+          category_of(result.status), arm_name(arm), p.x(), p.y(), p.z());
+    }
+  }
+  return "";
 }
 
 Eigen::Isometry3d DualArm::tool_pose(Arm arm) const {

@@ -41,6 +41,8 @@ struct DualArmParams {
   std::vector<double> right_home{0.33, 1.08, -0.72, 1.74, 1.80, -0.99, 1.08};
   IkParams ik;
   RobotDynamicsParams control;  // its time_step is replaced by the task's
+  // Links that may touch one another without a self collision (every pair of them).
+  std::vector<std::string> touching_links;
 
   template <class Fields>
   void describe(Fields& f) {
@@ -53,6 +55,8 @@ struct DualArmParams {
     f("right_home", right_home, "right arm joint positions at reset (rad)");
     f("ik", ik, "inverse kinematics");
     f("control", control, "joint control and its failure bounds");
+    f("touching_links", touching_links,
+      "links that may touch one another (every pair of them is no self collision)");
   }
 };
 
@@ -83,6 +87,11 @@ class DualArm {
   // physics step. Returns the failure category of the tick, "" when fine;
   // failure_detail() says more.
   std::string track(const Eigen::Vector3d& left_target, const Eigen::Vector3d& right_target);
+
+  // Whether inverse kinematics (from the last solutions) finds joint positions
+  // for both tool targets, without moving: "" when it does, else
+  // "<category>: <detail>" with the category track() would return.
+  std::string reach(const Eigen::Vector3d& left_target, const Eigen::Vector3d& right_target) const;
 
   // The executed tool pose (world frame).
   Eigen::Isometry3d tool_pose(Arm arm) const;
