@@ -14,7 +14,7 @@
 #include <vector>
 
 #include "core/config/field_rule.hpp"
-#include "sim/robot/robot_section.hpp"
+#include "sim/robot/robot_params.hpp"
 #include "sim/soft/anchor_gripper.hpp"
 #include "sim/soft/rope.hpp"
 #include "sim/soft/soft_world.hpp"
@@ -93,7 +93,7 @@ struct RopeKnotParams {
   RopeKnotMotion motion;
   // Floating grippers, or the dual-arm torso's tools holding the grippers'
   // orientations (rope_knot_scene.hpp).
-  RobotSection robot;
+  RobotParams robot;
   std::vector<double> base_offset_range{0.0, 0.0, 0.0};
 
   template <class Fields>

@@ -235,7 +235,7 @@ void RopeKnotScene::reset(const Scenario& scenario) {
 
 void RopeKnotScene::reset_arms(const Scenario& scenario, const Eigen::Vector3d& left,
                                const Eigen::Vector3d& right) {
-  DualArmParams arm = params_.robot.arm;
+  DualArmParams arm = params_.robot.dual_arm;
   const Eigen::Vector3d offset(value_or_zero(scenario, "base_dx"),
                                value_or_zero(scenario, "base_dy"),
                                value_or_zero(scenario, "base_dz"));

@@ -1,9 +1,11 @@
-// Which robot a table-top task moves its gripper with: `floating` (a
-// kinematic gripper moved directly) or `dual_arm` (a gripper carried by one
-// arm of the dual-arm torso: DualArmParams's fields beside `type` and `arm`).
+// A task's `robot:` section: what moves its grippers. `floating`: grippers
+// moved directly where they are commanded; `dual_arm`: grippers carried by the
+// dual-arm torso's tools through DualArm (DualArmParams's fields beside `type`,
+// `arm` and `unseen_links`, read only then).
 #pragma once
 
 #include <string>
+#include <vector>
 
 #include "core/config/field_rule.hpp"
 #include "sim/robot/dual_arm.hpp"
@@ -14,6 +16,8 @@ struct RobotParams {
   std::string type = "floating";
   std::string arm = "right";
   DualArmParams dual_arm;
+  // Links a task's camera does not draw: it sits in the head.
+  std::vector<std::string> unseen_links{"torso", "head"};
 
   bool on_arms() const { return type == "dual_arm"; }
   Arm driving_arm() const { return arm == "left" ? Arm::left : Arm::right; }
@@ -25,9 +29,11 @@ struct RobotParams {
       "the dual-arm torso (IK with a fixed orientation, joint control)",
       one_of({"floating", "dual_arm"}));
     if (!on_arms()) return;
-    f("arm", arm, "the arm carrying the gripper; the other holds its home pose",
+    f("arm", arm,
+      "the arm carrying the gripper of a one-gripper task; the other holds its home pose",
       one_of({"left", "right"}));
     dual_arm.describe(f);
+    f("unseen_links", unseen_links, "robot links the task's camera does not draw");
   }
 };
 
