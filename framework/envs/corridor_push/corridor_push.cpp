@@ -6,7 +6,6 @@
 #include <algorithm>
 #include <filesystem>
 
-#include "core/config/config_error.hpp"
 #include "core/parameter_error.hpp"
 #include "sim/robot/arm_gripper.hpp"
 
@@ -46,15 +45,6 @@ SceneDescription load_task_scene(const std::string& configured) {
 
 // The tool pointing down (tool z = world -z), its fingers closing along world x.
 Eigen::Matrix3d fingers_down() { return Eigen::Vector3d(1.0, -1.0, -1.0).asDiagonal(); }
-
-// A robot that cannot be built from the config is refused naming the key.
-std::unique_ptr<DualArm> robot_at(const RobotParams& params, double time_step) {
-  try {
-    return std::make_unique<DualArm>(params.dual_arm, time_step);
-  } catch (const ConfigError& e) {
-    throw ParameterError("robot", e.what());
-  }
-}
 
 }  // namespace
 
@@ -120,7 +110,7 @@ void CorridorPush::reset(const Scenario& scenario) {
   failure_.clear();
   if (params_.robot.on_arms()) {
     // A fresh robot every reset, as the world is, so every trial replays alike.
-    robot_ = robot_at(params_.robot, params_.physics.time_step);
+    robot_ = build_robot(params_.robot.dual_arm, params_.physics.time_step);
     const Arm arm = params_.robot.driving_arm();
     robot_->set_tool_orientation(arm, fingers_down());
     failure_ = robot_->place_tool(arm, start_position());

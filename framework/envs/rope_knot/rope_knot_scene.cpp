@@ -10,6 +10,7 @@
 #include <string>
 #include <utility>
 
+#include "sim/robot/robot_params.hpp"
 #include "sim/robot/robot_render.hpp"
 #include "sim/soft/soft_render.hpp"
 
@@ -241,9 +242,12 @@ void RopeKnotScene::reset_arms(const Scenario& scenario, const Eigen::Vector3d& 
                                value_or_zero(scenario, "base_dz"));
   for (int i = 0; i < 3; ++i) arm.base_position.at(i) += offset[i];
   // A fresh robot every reset: a trial replays bit for bit.
-  arms_ = std::make_unique<DualArm>(arm, world_->time_step());
+  arms_ = build_robot(arm, world_->time_step());
   arms_->set_tool_orientation(Arm::left, side_grasp());
   arms_->set_tool_orientation(Arm::right, top_grasp());
+  // The commanded points until the arms move: the start, also when it is out of reach.
+  left_target_ = left;
+  right_target_ = right;
   arm_failure_ = arms_->reach(left, right);
   if (!arm_failure_.empty()) {
     fault_ = arm_failure_;

@@ -4,11 +4,12 @@
 
 #include "config/test_files.hpp"
 #include "core/seeds.hpp"
+#include "sim/robot/shipped_robot.hpp"
 
 namespace corrmp {
 namespace {
 
-const std::string kShipped = std::string(PROJECT_DIR) + "/assets/robots/dual_arm_torso.urdf";
+using testing::kShippedRobot;
 
 // The tool pointing down (tool z = world -z), fingers closing along world x.
 Eigen::Isometry3d pointing_down(const Eigen::Vector3d& position) {
@@ -36,7 +37,7 @@ Eigen::VectorXd random_within_limits(const ArmKinematics& arm, Rng& rng) {
 }
 
 TEST(ArmKinematics, ReachesPosesOfRandomConfigurationsFromOtherWarmStarts) {
-  const RobotModel model = load_robot_model(kShipped);
+  const RobotModel model = load_robot_model(kShippedRobot);
   const IkParams params;
   for (const std::string side : {"left", "right"}) {
     ArmKinematics arm(model, "base", side + "_tool", params);
@@ -57,7 +58,7 @@ TEST(ArmKinematics, ReachesPosesOfRandomConfigurationsFromOtherWarmStarts) {
 }
 
 TEST(ArmKinematics, FarTargetIsOutOfReach) {
-  const RobotModel model = load_robot_model(kShipped);
+  const RobotModel model = load_robot_model(kShippedRobot);
   ArmKinematics arm(model, "base", "right_tool");
   const Eigen::VectorXd start = Eigen::VectorXd::Zero(7);
   const IkResult result = arm.solve(pointing_down({2.0, -0.2, 0.3}), start);
@@ -94,7 +95,7 @@ TEST(ArmKinematics, TargetReachedOnlyOutsideTheLimitsIsAJointLimit) {
 }
 
 TEST(ArmKinematics, TracksALineWithTheToolDownWithoutFlips) {
-  const RobotModel model = load_robot_model(kShipped);
+  const RobotModel model = load_robot_model(kShippedRobot);
   const IkParams params;
   ArmKinematics arm(model, "base", "right_tool", params);
   const Eigen::Vector3d from(0.35, -0.25, 0.05), to(0.50, 0.05, 0.10);
@@ -116,7 +117,7 @@ TEST(ArmKinematics, TracksALineWithTheToolDownWithoutFlips) {
 }
 
 TEST(ArmKinematics, SameCallGivesBitIdenticalJointPositions) {
-  const RobotModel model = load_robot_model(kShipped);
+  const RobotModel model = load_robot_model(kShippedRobot);
   ArmKinematics first(model, "base", "left_tool");
   ArmKinematics second(model, "base", "left_tool");
   const Eigen::Isometry3d target = pointing_down({0.40, 0.05, 0.30});
@@ -131,7 +132,7 @@ TEST(ArmKinematics, SameCallGivesBitIdenticalJointPositions) {
 }
 
 TEST(ArmKinematics, ChainWithoutMovableJointsIsRejected) {
-  const RobotModel model = load_robot_model(kShipped);
+  const RobotModel model = load_robot_model(kShippedRobot);
   EXPECT_NE(testing::config_error_of([&] {
               ArmKinematics(model, "base", "head_camera");
             }).find("no movable joint from 'base' to 'head_camera'"),

@@ -6,11 +6,12 @@
 
 #include "config/test_files.hpp"
 #include "core/seeds.hpp"
+#include "sim/robot/shipped_robot.hpp"
 
 namespace corrmp {
 namespace {
 
-const std::string kShipped = std::string(PROJECT_DIR) + "/assets/robots/dual_arm_torso.urdf";
+using testing::kShippedRobot;
 
 // The tip pose composed joint by joint: origin, then the motion along the axis
 // given in the child frame.
@@ -54,7 +55,7 @@ void expect_chain_matches_model(const RobotModel& model, const std::string& base
 }
 
 TEST(KdlChain, ShippedArmsMatchTheModelComposedByHand) {
-  const RobotModel model = load_robot_model(kShipped);
+  const RobotModel model = load_robot_model(kShippedRobot);
   expect_chain_matches_model(model, "base", "left_tool");
   expect_chain_matches_model(model, "base", "right_tool");
   expect_chain_matches_model(model, "torso", "right_link_4");
@@ -77,7 +78,7 @@ TEST(KdlChain, TiltedAxesAndPrismaticJointsMatchTheModel) {
 }
 
 TEST(KdlChain, HeadCameraLooksForwardAndDownAtTheTable) {
-  const RobotModel model = load_robot_model(kShipped);
+  const RobotModel model = load_robot_model(kShippedRobot);
   const KDL::Chain chain = kdl_chain(model, "base", "head_camera");
   EXPECT_EQ(chain.getNrOfJoints(), 0u);
   const Eigen::Isometry3d camera = pose_by_hand(model, model.chain("base", "head_camera"), {});

@@ -3,6 +3,7 @@
 #include <gtest/gtest.h>
 
 #include "config/test_files.hpp"
+#include "sim/robot/shipped_robot.hpp"
 
 namespace corrmp {
 namespace {
@@ -10,7 +11,7 @@ namespace {
 using testing::config_error_of;
 using testing::TempDir;
 
-const std::string kShipped = std::string(PROJECT_DIR) + "/assets/robots/dual_arm_torso.urdf";
+using testing::kShippedRobot;
 
 std::string robot(const std::string& body) { return "<robot name='r'>" + body + "</robot>"; }
 
@@ -111,7 +112,7 @@ TEST(RobotModel, ChainToALinkNotBelowTheBaseNamesFileAndLinks) {
 }
 
 TEST(RobotModel, ShippedTorsoHasTwoSevenJointArmsAndItsFrames) {
-  const RobotModel model = load_robot_model(kShipped);
+  const RobotModel model = load_robot_model(kShippedRobot);
   EXPECT_EQ(model.root, "base");
   int movable = 0;
   for (const RobotJoint& joint : model.joints) movable += joint.type != JointType::fixed;
