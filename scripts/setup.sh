@@ -7,6 +7,7 @@ set -euo pipefail
 PACKAGES=(
   g++ cmake make pkg-config git
   libbullet-dev
+  liborocos-kdl-dev liburdfdom-dev libtinyxml-dev  # the robot model (URDF) and its kinematics (KDL)
   libeigen3-dev
   libopencv-dev
   libyaml-cpp-dev

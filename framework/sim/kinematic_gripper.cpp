@@ -1,7 +1,7 @@
 // The kinematic parallel gripper.
 #include "sim/kinematic_gripper.hpp"
 
-#include <fmt/format.h>
+#include "sim/waypoint_stepping.hpp"
 
 namespace corrmp {
 
@@ -50,39 +50,20 @@ void KinematicGripper::set_closed(bool closed) {
   place_bodies();
 }
 
+void KinematicGripper::place(const Eigen::Vector3d& position) {
+  position_ = position;
+  place_bodies();
+}
+
 TrackingResult KinematicGripper::follow(const Eigen::MatrixXd& waypoints,
                                         const std::function<std::string()>& check) {
-  TrackingResult result;
-  if (waypoints.cols() != 3) {
-    throw std::invalid_argument(
-        fmt::format("gripper waypoints need 3 columns (x, y, z), got {}", waypoints.cols()));
-  }
-  const double step_length = params_.max_speed * world_.time_step();
-  for (Eigen::Index w = 0; w < waypoints.rows(); ++w) {
-    const Eigen::Vector3d target = waypoints.row(w).transpose();
-    if (!target.allFinite()) {
-      result.ok = false;
-      result.failure = fmt::format("waypoint {} is not finite", w);
-      return result;
-    }
-    while (true) {
-      const Eigen::Vector3d to_go = target - position_;
-      const double distance = to_go.norm();
-      if (distance < 1e-12) break;
-      position_ = distance <= step_length ? target : position_ + to_go * (step_length / distance);
-      place_bodies();
-      world_.step();
-      ++result.ticks;
-      std::string failure = world_.blow_up();
-      if (failure.empty() && check) failure = check();
-      if (!failure.empty()) {
-        result.ok = false;
-        result.failure = failure;
-        return result;
-      }
-    }
-  }
-  return result;
+  return step_through_waypoints(waypoints, params_.max_speed * world_.time_step(), position_, [&] {
+    place_bodies();
+    world_.step();
+    std::string failure = world_.blow_up();
+    if (failure.empty() && check) failure = check();
+    return failure;
+  });
 }
 
 }  // namespace corrmp

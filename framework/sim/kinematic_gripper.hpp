@@ -36,6 +36,8 @@ class KinematicGripper : public Gripper {
 
   Eigen::Vector3d position() const override { return position_; }
   void set_closed(bool closed) override;
+  // Puts the gripper's bodies at `position` (the tool centre point) at once.
+  void place(const Eigen::Vector3d& position);
   TrackingResult follow(const Eigen::MatrixXd& waypoints,
                         const std::function<std::string()>& check) override;
 

@@ -7,6 +7,7 @@
 #include <filesystem>
 
 #include "core/parameter_error.hpp"
+#include "sim/robot/arm_gripper.hpp"
 
 namespace corrmp {
 
@@ -42,6 +43,9 @@ SceneDescription load_task_scene(const std::string& configured) {
   return scene;
 }
 
+// The tool pointing down (tool z = world -z), its fingers closing along world x.
+Eigen::Matrix3d fingers_down() { return Eigen::Vector3d(1.0, -1.0, -1.0).asDiagonal(); }
+
 }  // namespace
 
 CorridorPush::CorridorPush(const CorridorPushParams& params)
@@ -68,6 +72,10 @@ TaskReport CorridorPush::report() const {
   report.decision_labels = {"push", "none", "pull"};
   report.plot_horizontal = 1;  // top view: y to the right, x up
   report.plot_vertical = 0;
+  if (params_.robot.on_arms()) {
+    report.failure_categories = {"out of reach", "joint limit", "self collision", "tracking error",
+                                 "physics fault"};
+  }
   return report;
 }
 
@@ -83,6 +91,7 @@ Scenario CorridorPush::sample_scenario(Rng& rng) const {
 void CorridorPush::reset(const Scenario& scenario) {
   scenario_ = scenario;
   gripper_.reset();
+  robot_.reset();
   world_ = std::make_unique<BulletWorld>(params_.physics);
   SceneDescription scene = scene_;
   for (auto& body : scene.bodies) {
@@ -97,9 +106,18 @@ void CorridorPush::reset(const Scenario& scenario) {
   object_ = world_->find("object");
   wall_left_ = world_->find("corridor_left");
   wall_right_ = world_->find("corridor_right");
-  gripper_ = std::make_unique<KinematicGripper>(*world_, params_.gripper, start_position());
   touched_corridor_ = false;
   failure_.clear();
+  if (params_.robot.on_arms()) {
+    // A fresh robot every reset, as the world is, so every trial replays alike.
+    robot_ = build_robot(params_.robot.dual_arm, params_.physics.time_step);
+    const Arm arm = params_.robot.driving_arm();
+    robot_->set_tool_orientation(arm, fingers_down());
+    failure_ = robot_->place_tool(arm, start_position());
+    gripper_ = std::make_unique<ArmGripper>(*world_, params_.gripper, *robot_, arm);
+  } else {
+    gripper_ = std::make_unique<KinematicGripper>(*world_, params_.gripper, start_position());
+  }
   for (int i = 0; i < params_.settle_ticks; ++i) world_->step();
 }
 
@@ -160,17 +178,25 @@ Observation CorridorPush::observe(bool with_image) {
 }
 
 Outcome CorridorPush::outcome() const {
-  if (!failure_.empty()) return {false, failure_, {}, {}};
-  if (touched_corridor_) return {false, "the object touched the corridor", {}, {}};
-  const Eigen::Vector3d object = object_position();
-  if (object.y() <= corridor_mid_y()) {
-    return {false,
-            fmt::format("the object stopped {:.1f} cm before the corridor's midpoint",
-                        100 * (corridor_mid_y() - object.y())),
-            {},
-            {}};
+  Outcome outcome{true, "", {}, {}};
+  if (!failure_.empty()) {
+    outcome = {false, failure_, {}, {}};
+  } else if (touched_corridor_) {
+    outcome = {false, "the object touched the corridor", {}, {}};
+  } else if (object_position().y() <= corridor_mid_y()) {
+    outcome = {false,
+               fmt::format("the object stopped {:.1f} cm before the corridor's midpoint",
+                           100 * (corridor_mid_y() - object_position().y())),
+               {},
+               {}};
   }
-  return {true, "", {}, {}};
+  if (robot_) {
+    // Deterministic robot figures kept with the trial (the IK's wall time is not).
+    outcome.details["max_tracking_error"] = robot_->max_tracking_error();
+    outcome.details["ik_solves"] = static_cast<double>(robot_->ik_stats().solves);
+    outcome.details["ik_failures"] = static_cast<double>(robot_->ik_stats().failures);
+  }
+  return outcome;
 }
 
 std::string CorridorPush::classify_decision(const Eigen::MatrixXd& trajectory) const {

@@ -15,6 +15,7 @@
 #include "sim/bullet_world.hpp"
 #include "sim/head_camera.hpp"
 #include "sim/kinematic_gripper.hpp"
+#include "sim/robot/dual_arm.hpp"
 #include "sim/scene_description.hpp"
 
 namespace corrmp {
@@ -46,6 +47,8 @@ class CorridorPush : public Environment {
   double tool_half_width_x() const;        // closed fingers, along x
   double tool_half_width_y() const;        // along y
   Eigen::Vector3d start_position() const;  // the tool's position at reset
+  // The dual-arm robot carrying the gripper; null when the gripper floats.
+  const DualArm* robot() const { return robot_.get(); }
 
  private:
   CorridorPushParams params_;
@@ -53,7 +56,8 @@ class CorridorPush : public Environment {
   double nominal_corridor_x_;
   Scenario scenario_;
   std::unique_ptr<BulletWorld> world_;
-  std::unique_ptr<KinematicGripper> gripper_;
+  std::unique_ptr<DualArm> robot_;  // on arms only
+  std::unique_ptr<Gripper> gripper_;
   int object_ = -1, wall_left_ = -1, wall_right_ = -1;
   bool touched_corridor_ = false;
   std::string failure_;

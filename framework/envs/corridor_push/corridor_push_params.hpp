@@ -10,6 +10,7 @@
 #include "sim/bullet_world.hpp"
 #include "sim/head_camera.hpp"
 #include "sim/kinematic_gripper.hpp"
+#include "sim/robot/robot_params.hpp"
 
 namespace corrmp {
 
@@ -17,6 +18,7 @@ struct CorridorPushParams {
   std::string scene = "assets/scenes/corridor.yaml";
   PhysicsParams physics;
   GripperParams gripper;
+  RobotParams robot;
   double corridor_range = 0.06;
   double tolerance = 0.006;
   double object_noise = 0.0;
@@ -36,6 +38,7 @@ struct CorridorPushParams {
     f("scene", scene, "scene file with table, object, corridor_left and corridor_right");
     f("physics", physics, "Bullet world");
     f("gripper", gripper, "kinematic parallel gripper");
+    f("robot", robot, "what moves the gripper: floating, or an arm of the dual-arm torso");
     f("corridor_range", corridor_range, "corridor offset range along x (m), uniform, centred",
       at_least(0.0));
     f("tolerance", tolerance, "misalignment (m) below which no correction is needed",

@@ -67,6 +67,11 @@ TaskReport RopeKnot::report() const {
   report.outcome_metrics = {"knot", "enclosed"};
   report.failure_categories = {"missed enclose", "near miss", "knot lost while tightening",
                                kPhysicsFault, kInvalidTrajectory};
+  if (params_.task.robot.on_arms()) {
+    for (const char* arm : {"out of reach", "joint limit", "self collision", "tracking error"}) {
+      report.failure_categories.push_back(arm);
+    }
+  }
   return report;
 }
 
@@ -76,6 +81,7 @@ void RopeKnot::reset(const Scenario& scenario) {
   fault_.clear();
   critical_offset_.reset();
   scene_.reset(scenario);
+  fault_ = scene_.arm_failure();  // the arms could not reach the start
 }
 
 std::vector<SegmentInfo> RopeKnot::segments() const {
@@ -108,8 +114,9 @@ std::string RopeKnot::execute(const std::string& segment, const Eigen::MatrixXd&
   const std::string fault = scene_.execute(rows);
   if (segment == "pre" && fault.empty()) critical_offset_ = scene_.end_offset();
   if (!fault.empty()) {
-    fault_ =
-        fault.rfind(kPhysicsFault, 0) == 0 ? fault : fmt::format("{}: {}", kPhysicsFault, fault);
+    // An arm failure is its own category; anything else stopping the rope is physics.
+    const bool kept = fault.rfind(kPhysicsFault, 0) == 0 || !scene_.arm_failure().empty();
+    fault_ = kept ? fault : fmt::format("{}: {}", kPhysicsFault, fault);
   }
   return fault_;
 }

@@ -14,6 +14,7 @@
 #include <vector>
 
 #include "core/config/field_rule.hpp"
+#include "sim/robot/robot_params.hpp"
 #include "sim/soft/anchor_gripper.hpp"
 #include "sim/soft/rope.hpp"
 #include "sim/soft/soft_world.hpp"
@@ -90,6 +91,10 @@ struct RopeKnotParams {
   int cor_points = 30;
   int post_points = 120;
   RopeKnotMotion motion;
+  // Floating grippers, or the dual-arm torso's tools holding the grippers'
+  // orientations (rope_knot_scene.hpp).
+  RobotParams robot;
+  std::vector<double> base_offset_range{0.0, 0.0, 0.0};
 
   template <class Fields>
   void describe(Fields& f) {
@@ -128,6 +133,10 @@ struct RopeKnotParams {
     f("cor_points", cor_points, "rows of the cor-MP segment", in_range(2, 10000));
     f("post_points", post_points, "rows of the post-MP segment", in_range(2, 10000));
     f("motion", motion, "the scripted teacher's choreography");
+    f("robot", robot, "what carries the grippers: floating, or dual_arm with its parameters");
+    f("base_offset_range", base_offset_range,
+      "uniform +- range of the robot base's offset in x, y, z (m; dual_arm only)",
+      size_is(3).at_least(0.0));
   }
 };
 

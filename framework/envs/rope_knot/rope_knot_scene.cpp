@@ -10,6 +10,8 @@
 #include <string>
 #include <utility>
 
+#include "sim/robot/robot_params.hpp"
+#include "sim/robot/robot_render.hpp"
 #include "sim/soft/soft_render.hpp"
 
 namespace corrmp {
@@ -25,6 +27,9 @@ Eigen::Vector3d vec3(const std::vector<double>& v, const char* what) {
 // Simulated time after a reset the right hand's noise knots cover; it holds
 // its last value after that (s).
 constexpr double kNoiseHorizon = 60.0;
+
+// The longest the arms may take from home to the start positions (s).
+constexpr double kArmTransitTime = 3.0;
 
 double value_or_zero(const Scenario& scenario, const std::string& key) {
   const auto it = scenario.find(key);
@@ -118,6 +123,13 @@ RopeKnotScene::RopeKnotScene(const RopeKnotParams& params) : params_(params) {
   check_points(m.right_loop, "right_loop");
   check_points(m.right_tuck, "right_tuck");
   check_scenarios_fit(params);
+  vec3(params.base_offset_range, "base_offset_range");
+  const bool offset = std::any_of(params.base_offset_range.begin(), params.base_offset_range.end(),
+                                  [](double r) { return r != 0.0; });
+  if (offset && !params.robot.on_arms()) {
+    throw std::invalid_argument(
+        "RopeKnotScene: base_offset_range moves the robot's base: it needs robot.type dual_arm");
+  }
   if (!(params.waypoint_noise_period > 0.0) || kNoiseHorizon / params.waypoint_noise_period > 1e6) {
     throw std::invalid_argument(fmt::format(
         "RopeKnotScene: waypoint_noise_period {} needs to be positive and at least {} s",
@@ -139,6 +151,12 @@ Scenario RopeKnotScene::sample(Rng& rng) const {
   s["drift_z"] = rng.uniform(-params_.drift_range[2], params_.drift_range[2]);
   // Drawn last: the other keys stay those of a given rng stream.
   s["noise_seed"] = static_cast<double>(rng.uniform_int(0, (int64_t{1} << 31) - 1));
+  const std::vector<double>& r = params_.base_offset_range;
+  if (r[0] != 0.0 || r[1] != 0.0 || r[2] != 0.0) {
+    s["base_dx"] = rng.uniform(-r[0], r[0]);
+    s["base_dy"] = rng.uniform(-r[1], r[1]);
+    s["base_dz"] = rng.uniform(-r[2], r[2]);
+  }
   return s;
 }
 
@@ -146,6 +164,9 @@ void RopeKnotScene::reset(const Scenario& scenario) {
   left_.reset();
   right_.reset();
   rope_.reset();
+  arms_.reset();
+  fault_.clear();
+  arm_failure_.clear();
   world_ = std::make_unique<SoftWorld>(params_.world);
   const Eigen::Vector3d bar = bar_centre();
   world_->add_bar("bar", bar, params_.bar_radius, params_.bar_length, params_.bar_friction);
@@ -196,22 +217,93 @@ void RopeKnotScene::reset(const Scenario& scenario) {
   for (int i = load; i < std::min(load + load_nodes, grasp); ++i) {
     rope_->set_mass(i, params_.load_mass / load_nodes);
   }
-  right_ = std::make_unique<AnchorGripper>(*rope_, params_.gripper, top_grasp(), r0);
-  left_ =
-      std::make_unique<AnchorGripper>(*rope_, params_.gripper, side_grasp(),
-                                      bar + vec3(params_.left_start_offset, "left_start_offset"));
+  const Eigen::Vector3d l0 = bar + vec3(params_.left_start_offset, "left_start_offset");
+  Eigen::Vector3d right_start = r0, left_start = l0;
+  if (params_.robot.on_arms()) {
+    reset_arms(scenario, l0, r0);
+    right_start = arms_->tool_position(Arm::right);
+    left_start = arms_->tool_position(Arm::left);
+  }
+  right_ = std::make_unique<AnchorGripper>(*rope_, params_.gripper, top_grasp(), right_start);
+  left_ = std::make_unique<AnchorGripper>(*rope_, params_.gripper, side_grasp(), left_start);
   right_->close();
   enclosed_ = -1;
   near_miss_ = false;
   drifting_ = false;
-  fault_.clear();
   const int settle = static_cast<int>(std::lround(params_.settle_time / world_->time_step()));
-  for (int t = 0; t < settle && fault_.empty(); ++t) tick(left_->position(), r0);
+  for (int t = 0; t < settle && fault_.empty(); ++t) tick(left_point(), r0);
+}
+
+void RopeKnotScene::reset_arms(const Scenario& scenario, const Eigen::Vector3d& left,
+                               const Eigen::Vector3d& right) {
+  DualArmParams arm = params_.robot.dual_arm;
+  const Eigen::Vector3d offset(value_or_zero(scenario, "base_dx"),
+                               value_or_zero(scenario, "base_dy"),
+                               value_or_zero(scenario, "base_dz"));
+  for (int i = 0; i < 3; ++i) arm.base_position.at(i) += offset[i];
+  // A fresh robot every reset: a trial replays bit for bit.
+  arms_ = build_robot(arm, world_->time_step());
+  arms_->set_tool_orientation(Arm::left, side_grasp());
+  arms_->set_tool_orientation(Arm::right, top_grasp());
+  // The commanded points until the arms move: the start, also when it is out of reach.
+  left_target_ = left;
+  right_target_ = right;
+  arm_failure_ = arms_->reach(left, right);
+  if (!arm_failure_.empty()) {
+    fault_ = arm_failure_;
+    return;
+  }
+  // From home to the start positions at the grippers' speed before the rope
+  // is held (the home poses are the start's for the configured base, so this
+  // takes no tick there).
+  left_target_ = arms_->tool_position(Arm::left);
+  right_target_ = arms_->tool_position(Arm::right);
+  const double reach = params_.gripper.max_speed * world_->time_step();
+  const double tolerance = 2.0 * arm.ik.position_tolerance;
+  const int most = static_cast<int>(std::lround(kArmTransitTime / world_->time_step()));
+  for (int t = 0; t < most; ++t) {
+    if ((arms_->tool_position(Arm::left) - left).norm() < tolerance &&
+        (arms_->tool_position(Arm::right) - right).norm() < tolerance) {
+      break;
+    }
+    const Eigen::Vector3d dl = left - left_target_, dr = right - right_target_;
+    left_target_ += dl.norm() > reach ? (dl * (reach / dl.norm())).eval() : dl;
+    right_target_ += dr.norm() > reach ? (dr * (reach / dr.norm())).eval() : dr;
+    const std::string failure = arms_->track(left_target_, right_target_);
+    if (!failure.empty()) {
+      arm_failure_ = fmt::format("{}: {}", failure, arms_->failure_detail());
+      fault_ = arm_failure_;
+      return;
+    }
+  }
+  left_target_ = left;
+  right_target_ = right;
+}
+
+Eigen::Vector3d RopeKnotScene::left_point() const {
+  return arms_ ? left_target_ : left_->position();
+}
+
+Eigen::Vector3d RopeKnotScene::right_point() const {
+  return arms_ ? right_target_ : right_->position();
 }
 
 void RopeKnotScene::tick(const Eigen::Vector3d& left, const Eigen::Vector3d& right) {
-  left_->tick_to(left);
-  right_->tick_to(right);
+  if (arms_) {
+    left_target_ = left;
+    right_target_ = right;
+    const std::string failure = arms_->track(left, right);
+    if (!failure.empty()) {
+      arm_failure_ = fmt::format("{}: {}", failure, arms_->failure_detail());
+      fault_ = arm_failure_;
+      return;
+    }
+    left_->tick_to(arms_->tool_position(Arm::left));
+    right_->tick_to(arms_->tool_position(Arm::right));
+  } else {
+    left_->tick_to(left);
+    right_->tick_to(right);
+  }
   world_->step();
   if (std::lround(world_->time() / world_->time_step()) % 20 == 0) fault_ = world_->blow_up();
 }
@@ -235,7 +327,7 @@ std::string RopeKnotScene::set_grips(bool left_closed, bool right_closed) {
   if (!right_closed && right_->closed()) right_->open();
   // Hold still while a release ramps out.
   while ((left_->releasing() || right_->releasing()) && fault_.empty()) {
-    tick(left_->position(), right_->position());
+    tick(left_point(), right_point());
   }
   return fault_;
 }
@@ -264,11 +356,11 @@ std::string RopeKnotScene::execute(const Eigen::MatrixXd& rows) {
       right_target += right_noise_;
     }
     while (fault_.empty()) {
-      const Eigen::Vector3d dl = left_target - left_->position();
-      const Eigen::Vector3d dr = right_target - right_->position();
+      const Eigen::Vector3d dl = left_target - left_point();
+      const Eigen::Vector3d dr = right_target - right_point();
       if (dl.norm() < 1e-9 && dr.norm() < 1e-9) break;
-      tick(left_->position() + (dl.norm() > reach ? (dl * (reach / dl.norm())).eval() : dl),
-           right_->position() + (dr.norm() > reach ? (dr * (reach / dr.norm())).eval() : dr));
+      tick(left_point() + (dl.norm() > reach ? (dl * (reach / dl.norm())).eval() : dl),
+           right_point() + (dr.norm() > reach ? (dr * (reach / dr.norm())).eval() : dr));
     }
     if (fault_.empty()) set_grips(rows(k, 3) >= 0.5, rows(k, 7) >= 0.5);
   }
@@ -281,9 +373,9 @@ Eigen::Vector3d RopeKnotScene::left_drift() const {
   return drifting_ ? drift_ : Eigen::Vector3d::Zero();
 }
 
-Eigen::Vector3d RopeKnotScene::left_command() const { return left_->position() - left_drift(); }
+Eigen::Vector3d RopeKnotScene::left_command() const { return left_point() - left_drift(); }
 Eigen::Vector3d RopeKnotScene::right_position() const { return right_->position(); }
-Eigen::Vector3d RopeKnotScene::right_command() const { return right_->position() - right_noise_; }
+Eigen::Vector3d RopeKnotScene::right_command() const { return right_point() - right_noise_; }
 bool RopeKnotScene::left_closed() const { return left_->closed(); }
 bool RopeKnotScene::right_closed() const { return right_->closed(); }
 std::vector<Eigen::Vector3d> RopeKnotScene::rope_nodes() const { return rope_->nodes(); }
@@ -292,11 +384,17 @@ Eigen::Vector3d RopeKnotScene::end_offset() const { return rope_end() - left_pos
 double RopeKnotScene::time() const { return world_->time(); }
 
 RenderScene RopeKnotScene::render_scene() const {
-  return soft_render_scene(*world_, *rope_, {left_.get(), right_.get()});
+  RenderScene scene = soft_render_scene(*world_, *rope_, {left_.get(), right_.get()});
+  if (arms_) add_robot(scene, arms_->shapes(), params_.robot.unseen_links);
+  return scene;
 }
 
 RopeKnotOutcome RopeKnotScene::outcome() const {
   RopeKnotOutcome out;
+  if (!arm_failure_.empty()) {
+    out.failure = arm_failure_.substr(0, arm_failure_.find(':'));
+    return out;
+  }
   if (!fault_.empty()) {
     out.failure = "physics fault";
     return out;

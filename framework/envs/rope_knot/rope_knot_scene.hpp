@@ -8,6 +8,16 @@
 // (looping) hand tracks its rows with waypoint noise: an offset interpolated
 // linearly between random knots in time, the "invisible" variation of the
 // paper's demonstrations.
+//
+// On the robot's arms (params.robot.type "dual_arm"): each tick the commanded
+// gripper positions (rows at bounded speed, plus the drift and noise) go to
+// DualArm::track with the grippers' fixed orientations as the tools'; the
+// grippers are placed where the tools are. A DualArm failure ("out of reach",
+// "joint limit", "self collision", "tracking error", "physics fault") ends the
+// execution and is the outcome's failure. The rope does not collide with the
+// arm's links: only the grippers' anchors hold it. The rope's left (enclosing)
+// gripper is DualArm's Arm::left, its right gripper Arm::right; the config
+// says which URDF chain each is (left_tool, right_tool).
 #pragma once
 
 #include <Eigen/Core>
@@ -20,13 +30,14 @@
 #include "envs/rope_knot/knot_check.hpp"
 #include "envs/rope_knot/rope_knot_params.hpp"
 #include "sim/render/render_scene.hpp"
+#include "sim/robot/dual_arm.hpp"
 
 namespace corrmp {
 
 struct RopeKnotOutcome {
   bool knot = false;
   // "" on success, else "missed enclose", "near miss", "knot lost while
-  // tightening" or "physics fault".
+  // tightening", "physics fault" or, on the arms, a DualArm failure category.
   std::string failure;
   KnotReport report;
 };
@@ -34,8 +45,9 @@ struct RopeKnotOutcome {
 class RopeKnotScene {
  public:
   // Checks the parameters (3-vectors, motion lists of whole points, every
-  // scenario of the grasp and span ranges fits the rope; std::invalid_argument
-  // naming the key otherwise) and resets to the nominal scenario.
+  // scenario of the grasp and span ranges fits the rope, a base offset range
+  // only on the arms; std::invalid_argument naming the key otherwise; the
+  // robot's ConfigError) and resets to the nominal scenario.
   explicit RopeKnotScene(const RopeKnotParams& params);
   ~RopeKnotScene();
 
@@ -43,24 +55,32 @@ class RopeKnotScene {
   // rope between the weight and the right gripper), drift_x, drift_y, drift_z
   // (m, the left hand's drift, see left_drift()), noise_seed (a whole number in
   // [0, 2^53]: the seed of the right hand's waypoint noise, see right_noise();
-  // missing: no noise). Other missing keys are 0. Builds the world, lets the
-  // rope settle.
+  // missing: no noise), base_dx, base_dy, base_dz (m, the robot base's offset
+  // from robot.base_position; dual_arm only). Other missing keys are 0. Builds
+  // the world, brings the arms' tools to the grippers' start positions, lets
+  // the rope settle.
   void reset(const Scenario& scenario);
-  // Draws grasp_offset, span_offset, drift_x, drift_y, drift_z and then
-  // noise_seed (uniform in [0, 2^31)), in that order.
+  // Draws grasp_offset, span_offset, drift_x, drift_y, drift_z, noise_seed
+  // (uniform in [0, 2^31)) and then, when base_offset_range is not all zero,
+  // base_dx, base_dy, base_dz, in that order.
   Scenario sample(Rng& rng) const;
 
-  // Follows the rows; "" or the physics fault that stopped it.
+  // Follows the rows; "" or the physics fault or arm failure that stopped it.
   std::string execute(const Eigen::MatrixXd& rows);
+  // The arm failure that stopped the execution ("<category>: <detail>"), "" if none.
+  const std::string& arm_failure() const { return arm_failure_; }
+  const DualArm* arms() const { return arms_.get(); }
 
-  Eigen::Vector3d left_position() const;  // finger mid-points
-  // Where the rows put the left gripper: its position without the hand's drift.
+  // Finger mid-points: on the arms, where the tools are.
+  Eigen::Vector3d left_position() const;
+  // Where the rows put the left gripper: its commanded position without the
+  // hand's drift.
   Eigen::Vector3d left_command() const;
   // The left hand's drift: the scenario's drift once the left gripper has let
   // go of the standing part (it reaches for the free end), zero before.
   Eigen::Vector3d left_drift() const;
   Eigen::Vector3d right_position() const;
-  // Where the rows put the right gripper: its position without the noise.
+  // Where the rows put the right gripper: its commanded position without the noise.
   Eigen::Vector3d right_command() const;
   // The right hand's waypoint noise on the row it tracks (or last tracked):
   // with a noise_seed, each axis interpolated linearly in the simulated time
@@ -83,6 +103,11 @@ class RopeKnotScene {
 
  private:
   void tick(const Eigen::Vector3d& left, const Eigen::Vector3d& right);
+  void reset_arms(const Scenario& scenario, const Eigen::Vector3d& left,
+                  const Eigen::Vector3d& right);
+  // The grippers' commanded positions (with drift and noise): floating, where they are.
+  Eigen::Vector3d left_point() const;
+  Eigen::Vector3d right_point() const;
   std::string set_grips(bool left_closed, bool right_closed);
   Eigen::Vector3d noise_at(double time) const;
 
@@ -91,6 +116,9 @@ class RopeKnotScene {
   std::unique_ptr<Rope> rope_;
   std::unique_ptr<AnchorGripper> left_;
   std::unique_ptr<AnchorGripper> right_;
+  std::unique_ptr<DualArm> arms_;                          // dual_arm only
+  Eigen::Vector3d left_target_ = Eigen::Vector3d::Zero();  // last commanded (arms)
+  Eigen::Vector3d right_target_ = Eigen::Vector3d::Zero();
   Eigen::Vector3d drift_ = Eigen::Vector3d::Zero();
   // The right hand's noise at times 0, waypoint_noise_period, ...; empty: none.
   std::vector<Eigen::Vector3d> noise_knots_;
@@ -98,9 +126,10 @@ class RopeKnotScene {
   // Nodes anchored at the left gripper's last close after it let go of the
   // standing part (-1: no such close yet); the pre-MP grab does not count.
   int enclosed_ = -1;
-  bool near_miss_ = false;  // at that close
-  bool drifting_ = false;   // the left gripper has opened once
-  std::string fault_;
+  bool near_miss_ = false;   // at that close
+  bool drifting_ = false;    // the left gripper has opened once
+  std::string fault_;        // what stopped the execution
+  std::string arm_failure_;  // when it was the arms
 };
 
 }  // namespace corrmp

@@ -1,0 +1,416 @@
+// The Bullet multibody robot: construction from the layout, joint motors and
+// the per-tick checks.
+#include "sim/robot/robot_dynamics.hpp"
+
+#include <BulletDynamics/Featherstone/btMultiBody.h>
+#include <BulletDynamics/Featherstone/btMultiBodyConstraintSolver.h>
+#include <BulletDynamics/Featherstone/btMultiBodyDynamicsWorld.h>
+#include <BulletDynamics/Featherstone/btMultiBodyJointLimitConstraint.h>
+#include <BulletDynamics/Featherstone/btMultiBodyJointMotor.h>
+#include <BulletDynamics/Featherstone/btMultiBodyLinkCollider.h>
+#include <btBulletDynamicsCommon.h>
+#include <fmt/format.h>
+
+#include <algorithm>
+#include <cmath>
+#include <stdexcept>
+
+namespace corrmp {
+
+namespace {
+
+// As in the rigid-body world: a millimetre of collision margin keeps contacts
+// where the geometry is (Bullet's default is 4 cm).
+constexpr double kCollisionMargin = 0.001;
+
+btVector3 to_vector(const Eigen::Vector3d& v) { return btVector3(v.x(), v.y(), v.z()); }
+
+btQuaternion to_quaternion(const Eigen::Matrix3d& rotation) {
+  const Eigen::Quaterniond q(rotation);
+  return btQuaternion(q.x(), q.y(), q.z(), q.w());
+}
+
+btTransform to_bullet(const Eigen::Isometry3d& pose) {
+  return btTransform(to_quaternion(pose.linear()), to_vector(pose.translation()));
+}
+
+Eigen::Isometry3d from_bullet(const btTransform& transform) {
+  const btQuaternion q = transform.getRotation();
+  const btVector3 t = transform.getOrigin();
+  Eigen::Isometry3d pose = Eigen::Isometry3d::Identity();
+  pose.linear() = Eigen::Quaterniond(q.w(), q.x(), q.y(), q.z()).normalized().toRotationMatrix();
+  pose.translation() = Eigen::Vector3d(t.x(), t.y(), t.z());
+  return pose;
+}
+
+std::unique_ptr<btCollisionShape> make_shape(const RobotShape& shape) {
+  const Eigen::Vector3d& s = shape.size;
+  std::unique_ptr<btCollisionShape> made;
+  switch (shape.kind) {
+    case RobotShape::Kind::box:
+      made = std::make_unique<btBoxShape>(btVector3(s.x() / 2, s.y() / 2, s.z() / 2));
+      break;
+    case RobotShape::Kind::cylinder:
+      made = std::make_unique<btCylinderShapeZ>(btVector3(s.x(), s.x(), s.y() / 2));
+      break;
+    case RobotShape::Kind::sphere:
+      made = std::make_unique<btSphereShape>(s.x());
+      break;
+  }
+  made->setMargin(kCollisionMargin);
+  return made;
+}
+
+// A link collider that also never collides with the listed links of its own
+// robot (Bullet's own filter only knows parent/child pairs).
+class RobotLinkCollider : public btMultiBodyLinkCollider {
+ public:
+  using btMultiBodyLinkCollider::btMultiBodyLinkCollider;
+  std::vector<int> allowed;  // multibody link indices, -1 for the base
+
+  bool checkCollideWithOverride(const btCollisionObject* object) const override {
+    const btMultiBodyLinkCollider* other = btMultiBodyLinkCollider::upcast(object);
+    if (other && other->m_multiBody == m_multiBody &&
+        std::find(allowed.begin(), allowed.end(), other->m_link) != allowed.end())
+      return false;
+    return btMultiBodyLinkCollider::checkCollideWithOverride(object);
+  }
+};
+
+// Whether two colliders have a contact point closer than `margin`.
+struct TouchCallback : btCollisionWorld::ContactResultCallback {
+  explicit TouchCallback(double margin) : margin(margin) { m_closestDistanceThreshold = margin; }
+  btScalar addSingleResult(btManifoldPoint& point, const btCollisionObjectWrapper*, int, int,
+                           const btCollisionObjectWrapper*, int, int) override {
+    if (point.getDistance() < margin) touching = true;
+    return 0;
+  }
+  double margin;
+  bool touching = false;
+};
+
+double clamp(double value, double lo, double hi) { return std::min(std::max(value, lo), hi); }
+
+}  // namespace
+
+struct RobotDynamics::Bullet {
+  btDefaultCollisionConfiguration configuration;
+  btCollisionDispatcher dispatcher{&configuration};
+  btDbvtBroadphase broadphase;
+  btMultiBodyConstraintSolver solver;
+  btMultiBodyDynamicsWorld world{&dispatcher, &broadphase, &solver, &configuration};
+  std::unique_ptr<btMultiBody> multibody;
+  std::vector<std::unique_ptr<btCollisionShape>> shapes;
+  std::vector<std::unique_ptr<RobotLinkCollider>> colliders;  // per body; null without shapes
+  std::vector<std::unique_ptr<btMultiBodyJointMotor>> motors;
+  std::vector<std::unique_ptr<btMultiBodyJointLimitConstraint>> limits;
+  btAlignedObjectArray<btQuaternion> scratch_rotations;
+  btAlignedObjectArray<btVector3> scratch_origins;
+
+  ~Bullet() {
+    for (auto& limit : limits) world.removeMultiBodyConstraint(limit.get());
+    for (auto& motor : motors) world.removeMultiBodyConstraint(motor.get());
+    for (auto& collider : colliders)
+      if (collider) world.removeCollisionObject(collider.get());
+    if (multibody) world.removeMultiBody(multibody.get());
+  }
+};
+
+RobotDynamics::RobotDynamics(
+    const RobotModel& model, const RobotDynamicsParams& params, const Eigen::Isometry3d& base_pose,
+    const std::vector<std::pair<std::string, std::string>>& allowed_contacts)
+    : model_(model),
+      params_(params),
+      layout_(make_multibody_layout(model)),
+      bullet_(std::make_unique<Bullet>()) {
+  for (int j : layout_.movable_joints) joint_names_.push_back(model_.joints[j].name);
+  bullet_->world.setGravity(btVector3(0, 0, -params_.gravity));
+  bullet_->world.getSolverInfo().m_numIterations = params_.solver_iterations;
+  build_multibody(base_pose);
+  build_colliders();
+  build_motors();
+  allow_contacts_at_zero(allowed_contacts);
+  reset(Eigen::VectorXd::Zero(dof()));
+}
+
+RobotDynamics::~RobotDynamics() = default;
+
+void RobotDynamics::build_multibody(const Eigen::Isometry3d& base_pose) {
+  const LayoutBody& root = layout_.bodies[0];
+  auto multibody = std::make_unique<btMultiBody>(
+      dof(), root.mass, to_vector(root.principal_inertia), /*fixedBase=*/true, /*canSleep=*/false);
+  multibody->setBaseWorldTransform(to_bullet(base_pose * root.com));
+  for (int link = 0; link < dof(); ++link) {
+    const LayoutBody& body = layout_.bodies[link + 1];
+    const Eigen::Isometry3d& parent_com = layout_.bodies[body.parent].com;
+    // Bullet's link frames are the centre-of-mass frames: rotations and
+    // offsets between them, with the pivot on the joint axis.
+    const Eigen::Matrix3d parent_to_this =
+        parent_com.linear().transpose() * body.joint_origin.linear() * body.com.linear();
+    const btQuaternion rotation = to_quaternion(parent_to_this.transpose());
+    const btVector3 axis = to_vector(body.com.linear().transpose() * body.axis);
+    const btVector3 pivot = to_vector(parent_com.linear().transpose() *
+                                      (body.joint_origin.translation() - parent_com.translation()));
+    const btVector3 to_com = to_vector(body.com.linear().transpose() * body.com.translation());
+    const btVector3 inertia = to_vector(body.principal_inertia);
+    if (model_.joints[body.joint].type == JointType::revolute) {
+      multibody->setupRevolute(link, body.mass, inertia, body.parent - 1, rotation, axis, pivot,
+                               to_com, /*disableParentCollision=*/true);
+    } else {
+      multibody->setupPrismatic(link, body.mass, inertia, body.parent - 1, rotation, axis, pivot,
+                                to_com, /*disableParentCollision=*/true);
+    }
+  }
+  multibody->finalizeMultiDof();
+  multibody->setHasSelfCollision(true);
+  multibody->setLinearDamping(0);
+  multibody->setAngularDamping(0);
+  bullet_->world.addMultiBody(multibody.get());
+  bullet_->multibody = std::move(multibody);
+}
+
+void RobotDynamics::build_colliders() {
+  btMultiBody& multibody = *bullet_->multibody;
+  for (size_t b = 0; b < layout_.bodies.size(); ++b) {
+    const LayoutBody& body = layout_.bodies[b];
+    if (body.collisions.empty()) {
+      bullet_->colliders.emplace_back();
+      continue;
+    }
+    auto compound = std::make_unique<btCompoundShape>();
+    for (const RobotShape& shape : body.collisions) {
+      bullet_->shapes.push_back(make_shape(shape));
+      compound->addChildShape(to_bullet(body.com.inverse() * shape.origin),
+                              bullet_->shapes.back().get());
+    }
+    compound->setMargin(kCollisionMargin);
+    const int link = static_cast<int>(b) - 1;
+    auto collider = std::make_unique<RobotLinkCollider>(&multibody, link);
+    collider->setCollisionShape(compound.get());
+    bullet_->shapes.push_back(std::move(compound));
+    collider->setWorldTransform(link < 0 ? multibody.getBaseWorldTransform()
+                                         : multibody.getLink(link).m_cachedWorldTransform);
+    bullet_->world.addCollisionObject(collider.get(), btBroadphaseProxy::DefaultFilter,
+                                      btBroadphaseProxy::AllFilter);
+    if (link < 0)
+      multibody.setBaseCollider(collider.get());
+    else
+      multibody.getLink(link).m_collider = collider.get();
+    bullet_->colliders.push_back(std::move(collider));
+  }
+}
+
+void RobotDynamics::build_motors() {
+  for (int link = 0; link < dof(); ++link) {
+    const RobotJoint& joint = model_.joints[layout_.movable_joints[link]];
+    auto motor = std::make_unique<btMultiBodyJointMotor>(bullet_->multibody.get(), link, 0.0,
+                                                         joint.effort * params_.time_step);
+    motor->setRhsClamp(joint.velocity);
+    bullet_->world.addMultiBodyConstraint(motor.get());
+    bullet_->motors.push_back(std::move(motor));
+    auto limit = std::make_unique<btMultiBodyJointLimitConstraint>(bullet_->multibody.get(), link,
+                                                                   joint.lower, joint.upper);
+    bullet_->world.addMultiBodyConstraint(limit.get());
+    bullet_->limits.push_back(std::move(limit));
+  }
+}
+
+// Pairs that overlap at q = 0 (and the listed ones) never collide: links
+// built to overlap at their joint housings are not a self collision.
+void RobotDynamics::allow_contacts_at_zero(
+    const std::vector<std::pair<std::string, std::string>>& allowed) {
+  auto body_of = [&](const std::string& name) {
+    for (size_t i = 0; i < model_.links.size(); ++i)
+      if (model_.links[i].name == name) return layout_.links[i].body;
+    throw std::invalid_argument(
+        fmt::format("robot '{}': allowed contact names unknown link '{}'", model_.name, name));
+  };
+  auto allow = [&](int a, int b) {
+    if (a == b || !bullet_->colliders[a] || !bullet_->colliders[b]) return;
+    bullet_->colliders[a]->allowed.push_back(b - 1);
+    bullet_->colliders[b]->allowed.push_back(a - 1);
+  };
+  for (const auto& [a, b] : allowed) allow(body_of(a), body_of(b));
+
+  reset(Eigen::VectorXd::Zero(dof()));
+  const int count = static_cast<int>(layout_.bodies.size());
+  for (int a = 0; a < count; ++a) {
+    for (int b = a + 1; b < count; ++b) {
+      if (!bullet_->colliders[a] || !bullet_->colliders[b] || layout_.bodies[b].parent == a)
+        continue;
+      TouchCallback touch(params_.contact_margin);
+      bullet_->world.contactPairTest(bullet_->colliders[a].get(), bullet_->colliders[b].get(),
+                                     touch);
+      if (touch.touching) allow(a, b);
+    }
+  }
+}
+
+int RobotDynamics::joint_index(const std::string& name) const {
+  const auto found = std::find(joint_names_.begin(), joint_names_.end(), name);
+  return found == joint_names_.end() ? -1 : static_cast<int>(found - joint_names_.begin());
+}
+
+Eigen::VectorXd RobotDynamics::lower_limits() const {
+  Eigen::VectorXd lower(dof());
+  for (int i = 0; i < dof(); ++i) lower[i] = model_.joints[layout_.movable_joints[i]].lower;
+  return lower;
+}
+
+Eigen::VectorXd RobotDynamics::upper_limits() const {
+  Eigen::VectorXd upper(dof());
+  for (int i = 0; i < dof(); ++i) upper[i] = model_.joints[layout_.movable_joints[i]].upper;
+  return upper;
+}
+
+void RobotDynamics::reset(const Eigen::VectorXd& q) {
+  if (q.size() != dof())
+    throw std::invalid_argument(fmt::format(
+        "robot '{}': reset with {} joint positions, expected {}", model_.name, q.size(), dof()));
+  btMultiBody& multibody = *bullet_->multibody;
+  for (int i = 0; i < dof(); ++i) {
+    multibody.setJointPos(i, q[i]);
+    multibody.setJointVel(i, 0.0);
+  }
+  multibody.clearForcesAndTorques();
+  multibody.clearVelocities();
+  update_kinematics();
+  multibody.updateCollisionObjectWorldTransforms(bullet_->scratch_rotations,
+                                                 bullet_->scratch_origins);
+  target_ = q;
+  motor_target_ = q;
+  target_velocity_.resize(0);
+  target_beyond_limits_ = false;
+  failure_.clear();
+  failure_detail_.clear();
+}
+
+void RobotDynamics::set_targets(const Eigen::VectorXd& positions) {
+  set_targets(positions, Eigen::VectorXd());
+}
+
+void RobotDynamics::set_targets(const Eigen::VectorXd& positions,
+                                const Eigen::VectorXd& velocities) {
+  if (positions.size() != dof() || (velocities.size() != 0 && velocities.size() != dof()))
+    throw std::invalid_argument(
+        fmt::format("robot '{}': targets for {} joints ({} velocities), expected {}", model_.name,
+                    positions.size(), velocities.size(), dof()));
+  target_beyond_limits_ = false;
+  target_detail_.clear();
+  target_.resize(dof());
+  for (int i = 0; i < dof(); ++i) {
+    const RobotJoint& joint = model_.joints[layout_.movable_joints[i]];
+    target_[i] = clamp(positions[i], joint.lower, joint.upper);
+    if (!target_beyond_limits_ &&
+        std::abs(positions[i] - target_[i]) > params_.joint_limit_margin) {
+      target_beyond_limits_ = true;
+      target_detail_ = fmt::format("joint '{}' commanded to {:.4g} beyond [{:.4g}, {:.4g}]",
+                                   joint.name, positions[i], joint.lower, joint.upper);
+    }
+  }
+  target_velocity_ = velocities;
+}
+
+void RobotDynamics::step() {
+  const double dt = params_.time_step;
+  for (int i = 0; i < dof(); ++i) {
+    const double limit = model_.joints[layout_.movable_joints[i]].velocity;
+    const double move = clamp(target_[i] - motor_target_[i], -limit * dt, limit * dt);
+    motor_target_[i] += move;
+    const double velocity =
+        target_velocity_.size() != 0 ? clamp(target_velocity_[i], -limit, limit) : move / dt;
+    // The motor's position term is the error left after moving at the target
+    // velocity for this tick, so a joint on its trajectory gets no extra push.
+    bullet_->motors[i]->setPositionTarget(motor_target_[i] - velocity * dt, params_.position_gain);
+    bullet_->motors[i]->setVelocityTarget(velocity, params_.velocity_gain);
+  }
+  bullet_->world.stepSimulation(dt, 0, dt);
+  time_ += dt;
+  update_kinematics();
+  run_checks();
+}
+
+void RobotDynamics::update_kinematics() {
+  bullet_->multibody->forwardKinematics(bullet_->scratch_rotations, bullet_->scratch_origins);
+}
+
+Eigen::VectorXd RobotDynamics::positions() const {
+  Eigen::VectorXd q(dof());
+  for (int i = 0; i < dof(); ++i) q[i] = bullet_->multibody->getJointPos(i);
+  return q;
+}
+
+Eigen::VectorXd RobotDynamics::velocities() const {
+  Eigen::VectorXd v(dof());
+  for (int i = 0; i < dof(); ++i) v[i] = bullet_->multibody->getJointVel(i);
+  return v;
+}
+
+Eigen::Isometry3d RobotDynamics::link_pose(const std::string& link) const {
+  for (size_t i = 0; i < model_.links.size(); ++i) {
+    if (model_.links[i].name != link) continue;
+    const LinkPlacement& placement = layout_.links[i];
+    const btMultiBody& multibody = *bullet_->multibody;
+    const btTransform com = placement.body == 0
+                                ? multibody.getBaseWorldTransform()
+                                : multibody.getLink(placement.body - 1).m_cachedWorldTransform;
+    return from_bullet(com) * layout_.bodies[placement.body].com.inverse() * placement.in_body;
+  }
+  throw std::invalid_argument(fmt::format("robot '{}': no link '{}'", model_.name, link));
+}
+
+bool RobotDynamics::fail(const std::string& category, const std::string& detail) {
+  failure_ = category;
+  failure_detail_ = detail;
+  return true;
+}
+
+void RobotDynamics::run_checks() {
+  failure_.clear();
+  failure_detail_.clear();
+  const Eigen::VectorXd q = positions();
+  const Eigen::VectorXd v = velocities();
+  if (!q.allFinite() || !v.allFinite()) {
+    fail("physics fault", "a joint position or velocity is not finite");
+    return;
+  }
+
+  const btMultiBody* multibody = bullet_->multibody.get();
+  for (int m = 0; m < bullet_->dispatcher.getNumManifolds(); ++m) {
+    const btPersistentManifold* manifold = bullet_->dispatcher.getManifoldByIndexInternal(m);
+    const auto* a = btMultiBodyLinkCollider::upcast(manifold->getBody0());
+    const auto* b = btMultiBodyLinkCollider::upcast(manifold->getBody1());
+    if (!a || !b || a->m_multiBody != multibody || b->m_multiBody != multibody) continue;
+    for (int p = 0; p < manifold->getNumContacts(); ++p) {
+      if (manifold->getContactPoint(p).getDistance() >= params_.contact_margin) continue;
+      fail("self collision",
+           fmt::format("links '{}' and '{}' touch", layout_.bodies[a->m_link + 1].link,
+                       layout_.bodies[b->m_link + 1].link));
+      return;
+    }
+  }
+
+  for (int i = 0; i < dof(); ++i) {
+    const RobotJoint& joint = model_.joints[layout_.movable_joints[i]];
+    if (q[i] < joint.lower - params_.joint_limit_margin ||
+        q[i] > joint.upper + params_.joint_limit_margin) {
+      fail("joint limit", fmt::format("joint '{}' at {:.4g} beyond [{:.4g}, {:.4g}]", joint.name,
+                                      q[i], joint.lower, joint.upper));
+      return;
+    }
+  }
+  if (target_beyond_limits_) {
+    fail("joint limit", target_detail_);
+    return;
+  }
+
+  for (int i = 0; i < dof(); ++i) {
+    if (std::abs(q[i] - target_[i]) > params_.tracking_error_bound) {
+      fail("tracking error",
+           fmt::format("joint '{}' at {:.4g}, target {:.4g}", joint_names_[i], q[i], target_[i]));
+      return;
+    }
+  }
+}
+
+}  // namespace corrmp

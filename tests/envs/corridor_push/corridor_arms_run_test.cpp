@@ -1,0 +1,44 @@
+// configs/corridor_pc_arms.yaml end to end through run_experiment, shrunk to a
+// few demonstrations, trials and updates: the trials run on the robot's arms.
+#include <gtest/gtest.h>
+
+#include "report/run_summaries.hpp"
+#include "store/result_store.hpp"
+#include "support/report_tool.hpp"
+
+namespace corrmp {
+namespace {
+
+const std::string kConfig = std::string(PROJECT_DIR) + "/configs/corridor_pc_arms.yaml";
+
+TEST(CorridorArmsRun, ATinyRunEvaluatesItsTrialsOnTheArms) {
+  testing::TempDir dir;
+  const testing::ToolOutcome run = testing::run_experiment_tool(
+      dir, kConfig +
+               " demonstrations.train=4 demonstrations.validation=1 evaluation.trials=2"
+               " policy.network.width=16 policy.training.updates=200"
+               " policy.training.validate_every=100 --threads 1 --quiet");
+  ASSERT_EQ(run.exit_code, 0) << run.err;
+  ResultStore store(dir.file("r.sqlite"));
+  const std::vector<RunSummary> runs = load_run_summaries(store, ReportQuery{});
+  ASSERT_EQ(runs.size(), 1u);
+  EXPECT_EQ(runs.front().trials, 2);
+  EXPECT_EQ(runs.front().settings.at("environment.robot.type"), "dual_arm");
+  ASSERT_TRUE(runs.front().task.has_value());
+  EXPECT_EQ(runs.front().task->failure_categories,
+            (std::vector<std::string>{"out of reach", "joint limit", "self collision",
+                                      "tracking error", "physics fault"}));
+  EXPECT_EQ(runs.front().metrics.count("failures_out_of_reach"), 1u);
+}
+
+TEST(CorridorArmsRun, AnUnknownRobotTypeIsAConfigErrorNamingTheKey) {
+  testing::TempDir dir;
+  const testing::ToolOutcome run =
+      testing::run_experiment_tool(dir, kConfig + " environment.robot.type=wheeled --quiet");
+  EXPECT_EQ(run.exit_code, 2);
+  EXPECT_NE(run.err.find("environment.robot.type"), std::string::npos) << run.err;
+  EXPECT_NE(run.err.find("wheeled"), std::string::npos) << run.err;
+}
+
+}  // namespace
+}  // namespace corrmp

@@ -1,0 +1,106 @@
+// The corridor task executed by the dual-arm torso's right arm.
+#include <gtest/gtest.h>
+
+#include <opencv2/core.hpp>
+
+#include "core/parameter_error.hpp"
+#include "envs/corridor_push/corridor_expert.hpp"
+#include "envs/corridor_push/corridor_push.hpp"
+#include "envs/corridor_push/path_sampling.hpp"
+
+namespace corrmp {
+namespace {
+
+// As configs/common/corridor_arms.yaml.
+CorridorPushParams on_arms() {
+  CorridorPushParams params;
+  params.robot.type = "dual_arm";
+  params.robot.dual_arm.left_home = {-0.16, 1.15, 1.2, 1.3, -1.68, -1.14, -1.19};
+  return params;
+}
+
+const Scenario kPush{{"corridor_offset", 0.021}, {"object_dx", 0.0}, {"object_dy", 0.0}};
+
+TEST(CorridorOnArms, TheExpertSucceedsThroughTheArmWhichLagsTheCommandByMillimetres) {
+  CorridorPush env{on_arms()};
+  ASSERT_NE(env.robot(), nullptr);
+  EXPECT_EQ(env.report().failure_categories,
+            (std::vector<std::string>{"out of reach", "joint limit", "self collision",
+                                      "tracking error", "physics fault"}));
+  const Demonstration demo = CorridorExpert{CorridorExpertParams{}}.demonstrate(env, kPush, false);
+  const Outcome outcome = env.outcome();
+  EXPECT_TRUE(outcome.success) << outcome.failure;
+  EXPECT_EQ(demo.decision, "push");
+  // The arm ends where the last waypoint commanded it, within the IK tolerance
+  // and the controller's lag, but not exactly there as a floating gripper does.
+  const Eigen::RowVectorXd commanded = demo.find("post")->y.bottomRows(1);
+  const double gap = (env.effector_position() - commanded).norm();
+  EXPECT_GT(gap, 0.0);
+  EXPECT_LT(gap, 0.003);
+  EXPECT_GT(env.robot()->ik_stats().solves, 1000);
+  EXPECT_EQ(env.robot()->ik_stats().failures, 0);
+  EXPECT_EQ(outcome.details.at("ik_solves"), env.robot()->ik_stats().solves);
+  EXPECT_GT(outcome.details.at("max_tracking_error"), 0.0);
+  EXPECT_TRUE(CorridorPush{CorridorPushParams{}}.outcome().details.empty());
+}
+
+TEST(CorridorOnArms, ATrialReplaysBitIdentically) {
+  CorridorPush env{on_arms()};
+  const Eigen::MatrixXd path = sample_path(
+      {{0.45, -0.285, 0.07}, {0.45, -0.285, 0.03}, {0.45, -0.15, 0.03}}, 30, {1.0, 1.0});
+  auto play = [&](CorridorPush& e) {
+    e.reset(kPush);
+    EXPECT_EQ(e.execute("pre", path), "");
+    return std::make_pair(e.effector_position(), e.object_position());
+  };
+  const auto first = play(env);
+  const auto again = play(env);
+  CorridorPush fresh{on_arms()};
+  const auto other = play(fresh);
+  EXPECT_EQ(first.first, again.first);
+  EXPECT_EQ(first.second, again.second);
+  EXPECT_EQ(first.first, other.first);
+  EXPECT_EQ(first.second, other.second);
+  EXPECT_GT(first.second.y(), -0.2 + 0.01);  // the arm pushed the object
+}
+
+TEST(CorridorOnArms, ACorridorOutOfTheArmsReachFailsAsOutOfReach) {
+  CorridorPushParams params = on_arms();
+  params.robot.dual_arm.base_position = {-1.5, 0.0, 0.0};
+  CorridorPush env{params};
+  env.reset(kPush);
+  const Eigen::MatrixXd path = sample_path({{0.45, -0.285, 0.07}, {0.45, -0.2, 0.07}}, 10, {1.0});
+  EXPECT_EQ(env.execute("pre", path), "out of reach");
+  EXPECT_EQ(env.outcome().failure, "out of reach");
+  EXPECT_FALSE(env.outcome().success);
+}
+
+TEST(CorridorOnArms, TheHeadCameraSeesTheArm) {
+  CorridorPush floating{CorridorPushParams{}};
+  CorridorPush arms{on_arms()};
+  // The gripper in front of the object, in view (at the start the arm is not).
+  const Eigen::MatrixXd path = sample_path({{0.45, -0.285, 0.07}, {0.40, -0.10, 0.07}}, 10, {1.0});
+  ASSERT_EQ(floating.execute("pre", path), "");
+  ASSERT_EQ(arms.execute("pre", path), "");
+  const cv::Mat without = floating.observe(true).rgb, with = arms.observe(true).rgb;
+  ASSERT_EQ(without.size(), with.size());
+  cv::Mat differs;
+  cv::compare(without.reshape(1), with.reshape(1), differs, cv::CMP_NE);
+  EXPECT_GT(cv::countNonZero(differs), 0.02 * differs.total());
+}
+
+TEST(CorridorOnArms, AnUnusableRobotIsRefusedNamingTheKey) {
+  CorridorPushParams params;
+  params.robot.dual_arm.urdf = "assets/robots/none.urdf";
+  params.robot.type = "dual_arm";
+  try {
+    CorridorPush env{params};
+    FAIL() << "no error";
+  } catch (const ParameterError& e) {
+    EXPECT_EQ(e.key(), "robot");
+    EXPECT_NE(std::string(e.what()).find("assets/robots/none.urdf"), std::string::npos);
+  }
+}
+
+}  // namespace
+}  // namespace corrmp
