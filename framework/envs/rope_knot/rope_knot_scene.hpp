@@ -46,8 +46,9 @@ class RopeKnotScene {
  public:
   // Checks the parameters (3-vectors, motion lists of whole points, every
   // scenario of the grasp and span ranges fits the rope, a base offset range
-  // only on the arms; std::invalid_argument naming the key otherwise; the
-  // robot's ConfigError) and resets to the nominal scenario.
+  // only on the arms; std::invalid_argument naming the key otherwise; a robot
+  // that cannot be built, ParameterError naming `robot`) and resets to the
+  // nominal scenario.
   explicit RopeKnotScene(const RopeKnotParams& params);
   ~RopeKnotScene();
 

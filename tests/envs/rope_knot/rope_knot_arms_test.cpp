@@ -13,6 +13,7 @@
 
 #include "core/config/config_loader.hpp"
 #include "core/config/config_reader.hpp"
+#include "core/parameter_error.hpp"
 #include "envs/rope_knot/rope_knot.hpp"
 #include "envs/rope_knot/rope_knot_script.hpp"
 
@@ -130,6 +131,28 @@ TEST(RopeKnotOnArms, TheBaseOffsetIsDrawnAfterTheOtherKeys) {
   RopeKnotParams floating;
   floating.base_offset_range = {0.1, 0.0, 0.0};
   EXPECT_THROW(RopeKnotScene{floating}, std::invalid_argument);
+}
+
+TEST(RopeKnotOnArms, AnUnusableRobotIsRefusedNamingTheKey) {
+  RopeKnotParams params = on_arms();
+  params.robot.dual_arm.urdf = "assets/robots/none.urdf";
+  try {
+    RopeKnotScene scene{params};
+    FAIL() << "no error";
+  } catch (const ParameterError& e) {
+    EXPECT_EQ(e.key(), "robot");
+    EXPECT_NE(std::string(e.what()).find("assets/robots/none.urdf"), std::string::npos);
+  }
+}
+
+TEST(RopeKnotOnArms, AStartOutOfReachKeepsTheStartAsTheCommand) {
+  RopeKnotParams params = on_arms();
+  params.bar_centre = {1.3, 0.0, 0.35};
+  RopeKnotScene scene(params);
+  const Eigen::Vector3d bar(1.3, 0.0, 0.35);
+  const Eigen::Vector3d start(params.left_start_offset[0], params.left_start_offset[1],
+                              params.left_start_offset[2]);
+  EXPECT_LT((scene.left_command() - (bar + start)).norm(), 1e-9);
 }
 
 }  // namespace
