@@ -17,7 +17,7 @@ struct RobotShape {
   // sphere: radius, 0, 0.
   Eigen::Vector3d size = Eigen::Vector3d::Zero();
   Eigen::Isometry3d origin = Eigen::Isometry3d::Identity();  // in the link frame
-  Eigen::Vector3f colour{0.6f, 0.6f, 0.6f};                   // RGB in [0, 1]
+  Eigen::Vector3f colour{0.6f, 0.6f, 0.6f};                  // RGB in [0, 1]
 };
 
 struct RobotLink {
@@ -39,8 +39,8 @@ struct RobotJoint {
   std::string parent;  // link names
   std::string child;
   Eigen::Isometry3d origin = Eigen::Isometry3d::Identity();  // child frame in parent, q = 0
-  Eigen::Vector3d axis = Eigen::Vector3d::UnitZ();            // unit, in the child frame
-  double lower = 0.0;     // position limits (rad or m); fixed joints: 0
+  Eigen::Vector3d axis = Eigen::Vector3d::UnitZ();           // unit, in the child frame
+  double lower = 0.0;  // position limits (rad or m); fixed joints: 0
   double upper = 0.0;
   double velocity = 0.0;  // velocity limit (rad/s or m/s)
   double effort = 0.0;    // effort limit (N m or N)
