@@ -6,6 +6,7 @@
 
 #include <algorithm>
 #include <optional>
+#include <set>
 
 #include "core/config/config_error.hpp"
 
@@ -231,7 +232,9 @@ std::vector<ErrorMetric> reference_columns(const DecisionTablesSpec& spec) {
 
 std::vector<ReferenceRow> reference_rows(const DecisionTablesSpec& spec) {
   std::vector<ReferenceRow> rows;
+  std::set<std::string> keys;
   for (const auto& column : spec.columns) {
+    if (!keys.insert(column.key).second) continue;
     ReferenceRow row{fmt::format("paper: {}", column.key),
                      fmt::format("{} of {}", column.task_successes, reference_trials(spec)),
                      fmt::format("{:.0f}%", 100 * overall_decision_match(spec, column)),

@@ -36,7 +36,7 @@ struct ErrorColumns {
 // The reference's numbers for one experiment's runs.
 struct ReferenceColumn {
   std::string experiment;
-  std::string key;      // names the row appended to the run table
+  std::string key;      // names the row appended to the run table (shared by equal numbers)
   std::string heading;  // the column's heading in the tables
   int task_successes = 0;
   std::map<std::string, double> decision_match, task_success_rate;
@@ -113,7 +113,8 @@ std::string decision_tables_section(const DecisionTablesSpec& spec, const RunsOf
 
 // The run table's rows of the reference: per column, its task successes of
 // its trials, its decision match over all trials (the per-label rates
-// weighted by the expected counts) and its errors.
+// weighted by the expected counts) and its errors; columns sharing a key
+// (the same numbers for two experiments) share the first one's row.
 // The error columns those rows fill, with the reference's headings.
 std::vector<ErrorMetric> reference_columns(const DecisionTablesSpec& spec);
 std::vector<ReferenceRow> reference_rows(const DecisionTablesSpec& spec);

@@ -38,6 +38,13 @@ TEST(PaperRows, AppendsThePapersRows) {
   EXPECT_NE(markdown.find("| | paper: mono | | 17 of 25 | 100% | 1.30 / 1.92 | 5.75 / 7.24 |"),
             std::string::npos)
       << markdown;
+  // The arms' columns share the floating gripper's numbers: one row each, not two.
+  size_t pc_rows = 0;
+  for (size_t at = markdown.find("paper: pc |"); at != std::string::npos;
+       at = markdown.find("paper: pc |", at + 1))
+    ++pc_rows;
+  EXPECT_EQ(pc_rows, 1u) << markdown;
+  EXPECT_EQ(reference_rows(tables()).size(), 3u);
   format.status_column = true;  // the paper's rows leave the status empty
   const std::string with_status = report_markdown(load_run_summaries(store, {}), format);
   EXPECT_NE(with_status.find("| | paper: pc | | | 24 of 25 | 100% | 0.80 / 1.45 | 1.69 / 3.19 |"),

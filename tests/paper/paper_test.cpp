@@ -30,9 +30,12 @@ std::string read(const std::string& path) {
 TEST(Paper, NamesItsColumnsExperimentsAndFigures) {
   const ReproductionSpec paper = load_paper(kPaper);
   EXPECT_EQ(paper.decision_tables.environment, "corridor_push");
-  EXPECT_EQ(reproduction_experiments(paper),
-            (std::vector<std::string>{"corridor_pc", "corridor_ae", "corridor_mono", "rope_color",
-                                      "rope_perfect", "rope_nocorrection", "rope_mono"}));
+  EXPECT_EQ(
+      reproduction_experiments(paper),
+      (std::vector<std::string>{"corridor_pc", "corridor_ae", "corridor_mono", "corridor_pc_arms",
+                                "corridor_ae_arms", "corridor_mono_arms", "rope_color",
+                                "rope_perfect", "rope_nocorrection", "rope_mono", "rope_color_arms",
+                                "rope_nocorrection_arms", "rope_mono_arms"}));
   EXPECT_EQ(reference_trials(paper.decision_tables), 25);
   ASSERT_EQ(paper.figures.trajectory_comparisons.size(), 2u);
   EXPECT_EQ(paper.figures.trajectory_comparisons[0].view.unit, "cm");
@@ -47,10 +50,12 @@ TEST(Paper, ADamagedCopyIsRefusedAtItsFileAndLine) {
   const std::string report = read(kPaper + "/report.yaml");
   std::string tables = read(kPaper + "/tables.yaml");
   dir.write("report.yaml", report);
-  const std::string pc_rates = "task_success_rate: {push: 1.00, none: 0.83, pull: 1.00}";
+  const std::string pc_rates =
+      "task_success_rate: &pc_success {push: 1.00, none: 0.83, pull: 1.00}";
   const size_t at = tables.find(pc_rates);
   ASSERT_NE(at, std::string::npos);
-  dir.write("tables.yaml", tables.substr(0, at) + "task_success_rate: {push: 1.00, none: 0.83}" +
+  dir.write("tables.yaml", tables.substr(0, at) +
+                               "task_success_rate: &pc_success {push: 1.00, none: 0.83}" +
                                tables.substr(at + pc_rates.size()));
   const std::string error = config_error_of([&] { load_paper(dir.path().string()); });
   EXPECT_EQ(error.rfind(dir.file("tables.yaml") + ":", 0), 0u) << error;
