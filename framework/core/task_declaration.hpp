@@ -42,6 +42,16 @@ struct TaskDeclaration {
   std::vector<std::string> failure_categories;
 };
 
+// The run metric counting the failed trials of a failure category: failures_<category>, spaces
+// as '_'.
+inline std::string failure_count_metric(const std::string& category) {
+  std::string name = "failures_" + category;
+  for (char& c : name) {
+    if (c == ' ') c = '_';
+  }
+  return name;
+}
+
 inline bool operator==(const TaskDeclaration& a, const TaskDeclaration& b) {
   return a.trajectory_columns == b.trajectory_columns && a.error_unit == b.error_unit &&
          a.error_scale == b.error_scale && a.error_segments == b.error_segments &&

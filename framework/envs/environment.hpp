@@ -12,6 +12,7 @@
 #include <string>
 #include <vector>
 
+#include "core/metric.hpp"
 #include "core/seeds.hpp"
 #include "core/task_declaration.hpp"
 #include "data/demonstrations.hpp"
@@ -105,6 +106,18 @@ class Environment {
   virtual void write_figures(const std::string& /*directory*/,
                              const std::vector<EvaluatedTrial>& /*trials*/,
                              const std::vector<Demonstration>& /*train*/) const {}
+
+  // What the task measures of an evaluation beyond what it declares: run metrics made from
+  // the trials alone (so the same trials give the same metrics) and lines added to the run's
+  // tables (headed "... (<label>)"), which may show wall-clock figures that no result keeps.
+  struct RunAdditions {
+    std::vector<Metric> metrics;
+    std::string tables;
+  };
+  virtual RunAdditions run_additions(const std::vector<EvaluatedTrial>& /*trials*/,
+                                     const std::string& /*label*/) const {
+    return {};
+  }
 };
 
 // Environments for up to `workers` threads: `first` and clones of it (only

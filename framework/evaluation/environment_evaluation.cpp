@@ -343,6 +343,9 @@ EnvironmentEvaluation evaluate_in_environment(Environment& environment, Demonstr
       });
   result.metrics = evaluation_metrics(task, decides, result.evaluated, segment_errors);
   result.tables = evaluation_tables(task, decides, result.evaluated, segment_errors, label);
+  const Environment::RunAdditions added = environment.run_additions(result.evaluated, label);
+  result.metrics.insert(result.metrics.end(), added.metrics.begin(), added.metrics.end());
+  result.tables += added.tables;
   return result;
 }
 

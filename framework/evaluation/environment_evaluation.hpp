@@ -5,7 +5,8 @@
 // effectors' position (or, for a relative segment, from zero offset) and the
 // context observed at the segment's start. What is measured is what the task
 // declares (TaskReport): the decision table (the paper's Table I), the
-// trajectory errors of its error segments (Table II) and its outcome metrics.
+// trajectory errors of its error segments (Table II) and its outcome metrics,
+// then what the task adds (Environment::run_additions).
 //
 // The trials run in parallel (core/thread_budget.hpp), each in its own environment
 // (Environment::clone; one after another where the task cannot clone), with the results a single

@@ -107,10 +107,9 @@ std::vector<MetricRecord> evaluation_metrics(const TaskReport& task, bool decide
     m.push_back({name + "_rate", outcome_mean(trials, name), rate_metric(Better::neither)});
   }
   for (const auto& category : task.failure_categories) {
-    std::string key = "failures_" + category;
-    std::replace(key.begin(), key.end(), ' ', '_');
-    m.push_back(
-        {key, static_cast<double>(count_failures(trials, category)), count_metric(Better::lower)});
+    m.push_back({failure_count_metric(category),
+                 static_cast<double>(count_failures(trials, category)),
+                 count_metric(Better::lower)});
   }
   return m;
 }
@@ -168,11 +167,18 @@ std::string evaluation_tables(const TaskReport& task, bool decided,
     }
   }
   if (!task.failure_categories.empty() && successes < count) {
-    t += fmt::format("Failures ({}):\n", label);
+    t += fmt::format("Failures ({}): {} of {} trials, by category (share of all trials)\n", label,
+                     count - successes, count);
+    const size_t w = column_width(task.failure_categories, 24);
+    int categorised = 0;
     for (const auto& category : task.failure_categories) {
-      t += fmt::format("  {:<{}} {:>3}\n", category, column_width(task.failure_categories, 24),
-                       count_failures(trials, category));
+      const int n = count_failures(trials, category);
+      categorised += n;
+      t += fmt::format("  {:<{}} {:>3} {:>5}\n", category, w, n, percent(n, count));
     }
+    const int other = std::max(0, count - successes - categorised);
+    if (other > 0)
+      t += fmt::format("  {:<{}} {:>3} {:>5}\n", "other", w, other, percent(other, count));
   }
   return t;
 }

@@ -10,6 +10,8 @@
 #include <map>
 #include <set>
 
+#include "report/failure_share_table.hpp"
+
 namespace corrmp {
 
 namespace {
@@ -44,7 +46,7 @@ std::string runs_section(const RunsOf& runs_of, const std::vector<std::string>& 
     }
   }
   if (!others.empty()) {
-    out += "\nOther experiments in the selection, not in this report:";
+    out += "\nOther experiments in the selection, not in the paper's tables:";
     for (const auto& [experiment, count] : others)
       out += fmt::format(" {} ({});", experiment, count);
     out.back() = '.';
@@ -148,6 +150,16 @@ ReproductionReport reproduction_report(const ReproductionSpec& spec,
   ReportCells cells;
   md += decision_tables_section(spec.decision_tables, runs_of, cells);
   md += "\n" + label_success_section(spec.label_success, runs_of, cells);
+  // Every selected experiment's failures: the paper's, then the others in the selection.
+  RunsOf all_runs = runs_of;
+  std::vector<std::string> order = experiments;
+  for (const auto& run : inputs.runs) {
+    if (!runs_of.count(run.experiment)) all_runs[run.experiment].push_back(&run);
+  }
+  for (const auto& [experiment, runs] : all_runs) {
+    if (!runs_of.count(experiment)) order.push_back(experiment);
+  }
+  md += "\n" + failure_share_section(all_runs, order, cells);
   md += "\n" + figures_section(inputs.figures, inputs.figure_notes);
   return {md, cells.csv()};
 }

@@ -2,9 +2,9 @@
 // After the runs read and how to read the cells, the reference's decision
 // and error tables (decision_tables.hpp), then the success per label of the
 // experiments it gives no number for (label_success_table.hpp), then the
-// figures. Which experiments, labels, numbers and texts are data
-// (ReproductionSpec); written as report.md and report.csv with the same
-// cells.
+// share of trials lost per failure category of every selected experiment
+// (failure_share_table.hpp), then the figures. Which experiments, labels, numbers and texts are
+// data (ReproductionSpec); written as report.md and report.csv with the same cells.
 #pragma once
 
 #include <optional>

@@ -190,8 +190,9 @@ TEST(PaperReport, TableOneHoldsMeansWithIntervalsBesideThePapersNumbers) {
       << md;
   EXPECT_NE(md.find("| corridor_pc | 3 | 0, 1, 2 | 15 | 1, 2, 3 |"), std::string::npos) << md;
   EXPECT_NE(md.find("| corridor_ae | 1 | 3 | 5 | 4 |"), std::string::npos) << md;
-  EXPECT_NE(md.find("Other experiments in the selection, not in this report: curves_demo (1)."),
-            std::string::npos)
+  EXPECT_NE(
+      md.find("Other experiments in the selection, not in the paper's tables: curves_demo (1)."),
+      std::string::npos)
       << md;
   EXPECT_NE(md.find("| Expected correction | PC | PC paper | AE | AE paper | Mono | Mono paper |"),
             std::string::npos)

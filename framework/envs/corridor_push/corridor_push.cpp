@@ -8,6 +8,7 @@
 
 #include "core/parameter_error.hpp"
 #include "sim/robot/arm_gripper.hpp"
+#include "sim/robot/robot_run_metrics.hpp"
 
 namespace corrmp {
 
@@ -43,6 +44,15 @@ SceneDescription load_task_scene(const std::string& configured) {
   return scene;
 }
 
+double value_or_zero(const Scenario& scenario, const std::string& key) {
+  const auto it = scenario.find(key);
+  return it == scenario.end() ? 0.0 : it->second;
+}
+
+bool any_offset(const std::vector<double>& range) {
+  return std::any_of(range.begin(), range.end(), [](double r) { return r != 0.0; });
+}
+
 // The tool pointing down (tool z = world -z), its fingers closing along world x.
 Eigen::Matrix3d fingers_down() { return Eigen::Vector3d(1.0, -1.0, -1.0).asDiagonal(); }
 
@@ -50,6 +60,10 @@ Eigen::Matrix3d fingers_down() { return Eigen::Vector3d(1.0, -1.0, -1.0).asDiago
 
 CorridorPush::CorridorPush(const CorridorPushParams& params)
     : params_(params), scene_(load_task_scene(params.scene)) {
+  if (any_offset(params.base_offset_range) && !params.robot.on_arms()) {
+    throw ParameterError("base_offset_range",
+                         "base_offset_range moves the robot's base: it needs robot.type dual_arm");
+  }
   const double left = scene_.body("corridor_left").position[0];
   const double right = scene_.body("corridor_right").position[0];
   nominal_corridor_x_ = (left + right) / 2;
@@ -59,7 +73,9 @@ CorridorPush::CorridorPush(const CorridorPushParams& params)
 CorridorPush::~CorridorPush() = default;
 
 std::unique_ptr<Environment> CorridorPush::clone() const {
-  return std::make_unique<CorridorPush>(params_);
+  auto copy = std::make_unique<CorridorPush>(params_);
+  copy->ik_times_ = ik_times_;
+  return copy;
 }
 
 TaskReport CorridorPush::report() const {
@@ -85,6 +101,13 @@ Scenario CorridorPush::sample_scenario(Rng& rng) const {
   const double noise = params_.object_noise;
   scenario["object_dx"] = noise > 0 ? rng.uniform(-noise, noise) : 0.0;
   scenario["object_dy"] = noise > 0 ? rng.uniform(-noise, noise) : 0.0;
+  // Drawn last and only when set: the other keys stay those of a given rng stream.
+  const std::vector<double>& r = params_.base_offset_range;
+  if (any_offset(r)) {
+    scenario["base_dx"] = rng.uniform(-r[0], r[0]);
+    scenario["base_dy"] = rng.uniform(-r[1], r[1]);
+    scenario["base_dz"] = rng.uniform(-r[2], r[2]);
+  }
   return scenario;
 }
 
@@ -109,8 +132,14 @@ void CorridorPush::reset(const Scenario& scenario) {
   touched_corridor_ = false;
   failure_.clear();
   if (params_.robot.on_arms()) {
-    // A fresh robot every reset, as the world is, so every trial replays alike.
-    robot_ = build_robot(params_.robot.dual_arm, params_.physics.time_step);
+    // A fresh robot every reset, as the world is, so every trial replays alike; its base
+    // moved by the scenario's offset (the scene stays where it is in the world).
+    DualArmParams arm_params = params_.robot.dual_arm;
+    const char* offsets[3] = {"base_dx", "base_dy", "base_dz"};
+    for (int i = 0; i < 3; ++i)
+      arm_params.base_position.at(i) += value_or_zero(scenario, offsets[i]);
+    robot_ = build_robot(arm_params, params_.physics.time_step);
+    robot_->time_solves_into(ik_times_);
     const Arm arm = params_.robot.driving_arm();
     robot_->set_tool_orientation(arm, fingers_down());
     failure_ = robot_->place_tool(arm, start_position());
@@ -190,13 +219,14 @@ Outcome CorridorPush::outcome() const {
                {},
                {}};
   }
-  if (robot_) {
-    // Deterministic robot figures kept with the trial (the IK's wall time is not).
-    outcome.details["max_tracking_error"] = robot_->max_tracking_error();
-    outcome.details["ik_solves"] = static_cast<double>(robot_->ik_stats().solves);
-    outcome.details["ik_failures"] = static_cast<double>(robot_->ik_stats().failures);
-  }
+  if (robot_) add_robot_details(*robot_, outcome.details);
   return outcome;
+}
+
+Environment::RunAdditions CorridorPush::run_additions(const std::vector<EvaluatedTrial>& trials,
+                                                      const std::string& label) const {
+  if (!params_.robot.on_arms()) return {};
+  return {robot_run_metrics(trials), ik_time_table(*ik_times_, label)};
 }
 
 std::string CorridorPush::classify_decision(const Eigen::MatrixXd& trajectory) const {

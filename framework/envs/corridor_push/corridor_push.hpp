@@ -16,6 +16,7 @@
 #include "sim/head_camera.hpp"
 #include "sim/kinematic_gripper.hpp"
 #include "sim/robot/dual_arm.hpp"
+#include "sim/robot/ik_solve_times.hpp"
 #include "sim/scene_description.hpp"
 
 namespace corrmp {
@@ -37,6 +38,10 @@ class CorridorPush : public Environment {
   std::vector<std::string> state_names() const override;
   Outcome outcome() const override;
   std::string classify_decision(const Eigen::MatrixXd& trajectory) const override;
+  // On the arms: the robot's run metrics and its IK time per solve
+  // (sim/robot/robot_run_metrics.hpp).
+  RunAdditions run_additions(const std::vector<EvaluatedTrial>& trials,
+                             const std::string& label) const override;
 
   const CorridorPushParams& params() const { return params_; }
   // Geometry the expert plans with.
@@ -57,6 +62,8 @@ class CorridorPush : public Environment {
   Scenario scenario_;
   std::unique_ptr<BulletWorld> world_;
   std::unique_ptr<DualArm> robot_;  // on arms only
+  // The wall time of the robots' IK solves, shared with the clones.
+  std::shared_ptr<IkSolveTimes> ik_times_ = std::make_shared<IkSolveTimes>();
   std::unique_ptr<Gripper> gripper_;
   int object_ = -1, wall_left_ = -1, wall_right_ = -1;
   bool touched_corridor_ = false;

@@ -19,6 +19,7 @@ struct CorridorPushParams {
   PhysicsParams physics;
   GripperParams gripper;
   RobotParams robot;
+  std::vector<double> base_offset_range{0.0, 0.0, 0.0};
   double corridor_range = 0.06;
   double tolerance = 0.006;
   double object_noise = 0.0;
@@ -39,6 +40,10 @@ struct CorridorPushParams {
     f("physics", physics, "Bullet world");
     f("gripper", gripper, "kinematic parallel gripper");
     f("robot", robot, "what moves the gripper: floating, or an arm of the dual-arm torso");
+    f("base_offset_range", base_offset_range,
+      "uniform +- range of the robot base's offset in x, y, z per scenario (m; dual_arm only): "
+      "the table, corridor and object move relative to the robot",
+      size_is(3).at_least(0.0));
     f("corridor_range", corridor_range, "corridor offset range along x (m), uniform, centred",
       at_least(0.0));
     f("tolerance", tolerance, "misalignment (m) below which no correction is needed",

@@ -6,6 +6,7 @@
 #include <cmath>
 
 #include "envs/rope_knot/rope_knot_figure.hpp"
+#include "sim/robot/robot_run_metrics.hpp"
 
 namespace corrmp {
 
@@ -44,12 +45,18 @@ std::string classify_rope_correction(const Eigen::Vector3d& d, double threshold)
 }
 
 // The scene starts in the nominal scenario.
-RopeKnot::RopeKnot(const RopeKnotEnvironmentParams& params)
-    : params_(params), scene_(params.task) {}
+RopeKnot::RopeKnot(const RopeKnotEnvironmentParams& params) : params_(params), scene_(params.task) {
+  scene_.time_ik_solves_into(ik_times_);
+}
 
 RopeKnot::~RopeKnot() = default;
 
-std::unique_ptr<Environment> RopeKnot::clone() const { return std::make_unique<RopeKnot>(params_); }
+std::unique_ptr<Environment> RopeKnot::clone() const {
+  auto copy = std::make_unique<RopeKnot>(params_);
+  copy->ik_times_ = ik_times_;
+  copy->scene_.time_ik_solves_into(ik_times_);
+  return copy;
+}
 
 TaskReport RopeKnot::report() const {
   TaskReport report;
@@ -166,6 +173,7 @@ Outcome RopeKnot::outcome() const {
     outcome.details["critical_end_dy"] = critical_offset_->y();
     outcome.details["critical_end_dz"] = critical_offset_->z();
   }
+  if (const DualArm* arms = scene_.arms()) add_robot_details(*arms, outcome.details);
   return outcome;
 }
 
@@ -179,7 +187,13 @@ std::string RopeKnot::classify_decision(const Eigen::MatrixXd& trajectory) const
 void RopeKnot::write_figures(const std::string& directory,
                              const std::vector<EvaluatedTrial>& trials,
                              const std::vector<Demonstration>& train) const {
-  write_knotting_figure(trials, train, directory + "/knotting.png");
+  write_knotting_figure(trials, train, report().failure_categories, directory + "/knotting.png");
+}
+
+Environment::RunAdditions RopeKnot::run_additions(const std::vector<EvaluatedTrial>& trials,
+                                                  const std::string& label) const {
+  if (!params_.task.robot.on_arms()) return {};
+  return {robot_run_metrics(trials), ik_time_table(*ik_times_, label)};
 }
 
 }  // namespace corrmp

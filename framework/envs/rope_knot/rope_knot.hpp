@@ -69,6 +69,10 @@ class RopeKnot : public Environment {
   std::string classify_decision(const Eigen::MatrixXd& trajectory) const override;
   void write_figures(const std::string& directory, const std::vector<EvaluatedTrial>& trials,
                      const std::vector<Demonstration>& train) const override;
+  // On the arms: the robot's run metrics and its IK time per solve
+  // (sim/robot/robot_run_metrics.hpp).
+  RunAdditions run_additions(const std::vector<EvaluatedTrial>& trials,
+                             const std::string& label) const override;
 
   const RopeKnotEnvironmentParams& params() const { return params_; }
   RopeKnotScene& scene() { return scene_; }
@@ -83,6 +87,8 @@ class RopeKnot : public Environment {
   std::string fault_;
   // The true rope-end offset from the left gripper after pre-MP.
   std::optional<Eigen::Vector3d> critical_offset_;
+  // The wall time of the arms' IK solves, shared with the clones.
+  std::shared_ptr<IkSolveTimes> ik_times_ = std::make_shared<IkSolveTimes>();
 };
 
 }  // namespace corrmp

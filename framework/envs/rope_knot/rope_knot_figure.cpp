@@ -15,18 +15,39 @@ namespace corrmp {
 namespace {
 
 constexpr int kPanel = 420;
-constexpr int kLegend = 70;
+constexpr int kLegendLine = 20;               // px per legend line
 const cv::Scalar kSuccessGreen(40, 160, 40);  // BGR
+const cv::Scalar kOtherFailure(0, 0, 0);
 
-cv::Scalar failure_colour(const std::string& failure) {
-  if (failure.rfind("missed enclose", 0) == 0) return {40, 40, 220};  // red
-  if (failure.rfind("near miss", 0) == 0) return {0, 190, 240};       // yellow
-  if (failure.rfind("knot lost", 0) == 0) return {170, 60, 160};      // purple
-  return {60, 60, 60};                                                // physics faults
+// One colour per declared category, by its place (cycling past the last).
+const std::vector<cv::Scalar>& category_palette() {
+  static const std::vector<cv::Scalar> palette{
+      {40, 40, 220},   // red
+      {0, 190, 240},   // yellow
+      {170, 60, 160},  // purple
+      {90, 90, 90},    // dark grey
+      {30, 90, 150},   // brown
+      {200, 110, 30},  // blue
+      {0, 120, 255},   // orange
+      {160, 160, 0},   // teal
+      {150, 80, 240},  // pink
+      {40, 130, 110},  // olive
+  };
+  return palette;
 }
 
-cv::Scalar trial_colour(const EvaluatedTrial& trial) {
-  return trial.success ? kSuccessGreen : failure_colour(trial.failure);
+// The place of the first category `failure` starts with; -1 for none.
+int category_of(const std::string& failure, const std::vector<std::string>& categories) {
+  for (size_t c = 0; c < categories.size(); ++c) {
+    if (failure.rfind(categories[c], 0) == 0) return static_cast<int>(c);
+  }
+  return -1;
+}
+
+cv::Scalar category_colour(int category) {
+  if (category < 0) return kOtherFailure;
+  const auto& palette = category_palette();
+  return palette[static_cast<size_t>(category) % palette.size()];
 }
 
 // Points (y, x) in cm of a trajectory's first two columns.
@@ -76,10 +97,53 @@ std::optional<cv::Point2d> context_point(const Eigen::VectorXd& context) {
   return cv::Point2d(100.0 * context(1), 100.0 * context(0));
 }
 
+// The legend's entries laid out left to right from `x0`, wrapping at `width`: the top-left
+// of each line, one per entry.
+std::vector<cv::Point> legend_layout(const std::vector<KnottingLegendEntry>& entries, int x0,
+                                     int width) {
+  std::vector<cv::Point> at;
+  int x = x0, line = 0;
+  for (const auto& entry : entries) {
+    int baseline = 0;
+    const int w =
+        cv::getTextSize(entry.text, cv::FONT_HERSHEY_SIMPLEX, 0.4, 1, &baseline).width + 30;
+    if (x > x0 && x + w > width) {
+      x = x0;
+      ++line;
+    }
+    at.emplace_back(x, line * kLegendLine);
+    x += w;
+  }
+  return at;
+}
+
 }  // namespace
 
+cv::Scalar knotting_trial_colour(const EvaluatedTrial& trial,
+                                 const std::vector<std::string>& categories) {
+  return trial.success ? kSuccessGreen : category_colour(category_of(trial.failure, categories));
+}
+
+std::vector<KnottingLegendEntry> knotting_failure_legend(
+    const std::vector<EvaluatedTrial>& trials, const std::vector<std::string>& categories) {
+  std::vector<bool> seen(categories.size() + 1, false);  // the last: other
+  for (const auto& trial : trials) {
+    if (trial.success) continue;
+    const int c = category_of(trial.failure, categories);
+    seen[c < 0 ? categories.size() : static_cast<size_t>(c)] = true;
+  }
+  std::vector<KnottingLegendEntry> entries;
+  for (size_t c = 0; c < categories.size(); ++c) {
+    if (seen[c]) entries.push_back({categories[c], category_colour(static_cast<int>(c))});
+  }
+  if (seen.back()) entries.push_back({"other failure", kOtherFailure});
+  return entries;
+}
+
 void write_knotting_figure(const std::vector<EvaluatedTrial>& trials,
-                           const std::vector<Demonstration>& train, const std::string& png_path) {
+                           const std::vector<Demonstration>& train,
+                           const std::vector<std::string>& categories,
+                           const std::string& png_path) {
   Bounds corrections, contexts;
   for (const auto& demo : train) {
     for (const auto& p : demonstrated_corrections(demo)) corrections.add(p);
@@ -95,7 +159,13 @@ void write_knotting_figure(const std::vector<EvaluatedTrial>& trials,
       if (auto p = context_point(trial.contexts.at("cor"))) contexts.add(*p);
     }
   }
-  cv::Mat canvas(kPanel + kLegend, 2 * kPanel, CV_8UC3, kPlotWhite);
+  std::vector<KnottingLegendEntry> legend{{"training demonstrations", kPlotLightGrey},
+                                          {"knot tied", kSuccessGreen}};
+  for (auto& entry : knotting_failure_legend(trials, categories)) legend.push_back(entry);
+  const std::vector<cv::Point> at = legend_layout(legend, 10, 2 * kPanel - 10);
+  const int legend_height = (at.empty() ? 0 : at.back().y) + kLegendLine + 30;
+
+  cv::Mat canvas(kPanel + legend_height, 2 * kPanel, CV_8UC3, kPlotWhite);
   const PlotPanel left = corrections.panel({0, 0, kPanel, kPanel});
   const PlotPanel right = contexts.panel({kPanel, 0, kPanel, kPanel});
   left.draw_frame(canvas, "corrections: left gripper dx (cm) up", "dy (cm)");
@@ -108,7 +178,7 @@ void write_knotting_figure(const std::vector<EvaluatedTrial>& trials,
     }
   }
   for (const auto& trial : trials) {
-    const cv::Scalar colour = trial_colour(trial);
+    const cv::Scalar colour = knotting_trial_colour(trial, categories);
     if (trial.generated.count("cor")) {
       draw_polyline(canvas, left, top_view(trial.generated.at("cor")), colour, 1);
     }
@@ -116,14 +186,14 @@ void write_knotting_figure(const std::vector<EvaluatedTrial>& trials,
       if (auto p = context_point(trial.contexts.at("cor"))) draw_dot(canvas, right, *p, colour);
     }
   }
-  const int y = kPanel + 20;
-  put_text(canvas, "grey: training demonstrations; green: knot tied", {10, y});
-  put_text(canvas, "red: missed enclose", {10, y + 20}, 0.4, failure_colour("missed enclose"));
-  put_text(canvas, "yellow: near miss", {200, y + 20}, 0.4, failure_colour("near miss"));
-  put_text(canvas, "purple: knot lost while tightening", {330, y + 20}, 0.4,
-           failure_colour("knot lost"));
-  put_text(canvas, "dark grey: physics fault, invalid trajectory", {560, y + 20}, 0.4,
-           failure_colour("physics"));
+  const int top = kPanel + 20;
+  for (size_t i = 0; i < legend.size(); ++i) {
+    const cv::Point origin(at[i].x, top + at[i].y);
+    cv::circle(canvas, origin + cv::Point(6, -4), 5, legend[i].colour, cv::FILLED, cv::LINE_AA);
+    const bool faint = legend[i].colour == kPlotLightGrey;  // its text would hardly show
+    put_text(canvas, legend[i].text, origin + cv::Point(16, 0), 0.4,
+             faint ? kPlotGrey : legend[i].colour);
+  }
   write_png(canvas, png_path, "write_knotting_figure");
 }
 

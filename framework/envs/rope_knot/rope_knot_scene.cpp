@@ -243,6 +243,7 @@ void RopeKnotScene::reset_arms(const Scenario& scenario, const Eigen::Vector3d& 
   for (int i = 0; i < 3; ++i) arm.base_position.at(i) += offset[i];
   // A fresh robot every reset: a trial replays bit for bit.
   arms_ = build_robot(arm, world_->time_step());
+  arms_->time_solves_into(ik_times_);
   arms_->set_tool_orientation(Arm::left, side_grasp());
   arms_->set_tool_orientation(Arm::right, top_grasp());
   // The commanded points until the arms move: the start, also when it is out of reach.
@@ -278,6 +279,11 @@ void RopeKnotScene::reset_arms(const Scenario& scenario, const Eigen::Vector3d& 
   }
   left_target_ = left;
   right_target_ = right;
+}
+
+void RopeKnotScene::time_ik_solves_into(std::shared_ptr<IkSolveTimes> times) {
+  ik_times_ = std::move(times);
+  if (arms_) arms_->time_solves_into(ik_times_);
 }
 
 Eigen::Vector3d RopeKnotScene::left_point() const {

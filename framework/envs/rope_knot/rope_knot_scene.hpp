@@ -31,6 +31,7 @@
 #include "envs/rope_knot/rope_knot_params.hpp"
 #include "sim/render/render_scene.hpp"
 #include "sim/robot/dual_arm.hpp"
+#include "sim/robot/ik_solve_times.hpp"
 
 namespace corrmp {
 
@@ -71,6 +72,8 @@ class RopeKnotScene {
   // The arm failure that stopped the execution ("<category>: <detail>"), "" if none.
   const std::string& arm_failure() const { return arm_failure_; }
   const DualArm* arms() const { return arms_.get(); }
+  // The arms built from now on add the wall time of their IK solves to `times`.
+  void time_ik_solves_into(std::shared_ptr<IkSolveTimes> times);
 
   // Finger mid-points: on the arms, where the tools are.
   Eigen::Vector3d left_position() const;
@@ -118,6 +121,7 @@ class RopeKnotScene {
   std::unique_ptr<AnchorGripper> left_;
   std::unique_ptr<AnchorGripper> right_;
   std::unique_ptr<DualArm> arms_;                          // dual_arm only
+  std::shared_ptr<IkSolveTimes> ik_times_;                 // null: not timed
   Eigen::Vector3d left_target_ = Eigen::Vector3d::Zero();  // last commanded (arms)
   Eigen::Vector3d right_target_ = Eigen::Vector3d::Zero();
   Eigen::Vector3d drift_ = Eigen::Vector3d::Zero();

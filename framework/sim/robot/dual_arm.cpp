@@ -176,8 +176,10 @@ std::string DualArm::track(const Eigen::Vector3d& left_target,
     target.translation() = arm == Arm::left ? left_target : right_target;
     const auto started = std::chrono::steady_clock::now();
     const IkResult result = state.kinematics.solve(base_inverse * target, state.solution);
-    ik_stats_.seconds +=
+    const double seconds =
         std::chrono::duration<double>(std::chrono::steady_clock::now() - started).count();
+    ik_stats_.seconds += seconds;
+    if (solve_times_) solve_times_->add(seconds);
     ++ik_stats_.solves;
     if (result.status != IkResult::Status::ok) {
       ++ik_stats_.failures;

@@ -18,10 +18,12 @@
 #include <array>
 #include <memory>
 #include <string>
+#include <utility>
 #include <vector>
 
 #include "core/config/field_rule.hpp"
 #include "sim/robot/arm_kinematics.hpp"
+#include "sim/robot/ik_solve_times.hpp"
 #include "sim/robot/robot_dynamics.hpp"
 #include "sim/robot/robot_model.hpp"
 
@@ -113,6 +115,9 @@ class DualArm {
     double seconds = 0.0;  // wall time in solve(); not deterministic, for reports only
   };
   const IkStats& ik_stats() const { return ik_stats_; }
+  // Also adds the wall time of each of track()'s solves to `times` (shared by a
+  // task's robots; null: not).
+  void time_solves_into(std::shared_ptr<IkSolveTimes> times) { solve_times_ = std::move(times); }
   // The largest joint tracking error (rad or m) since the last reset.
   double max_tracking_error() const { return max_tracking_error_; }
 
@@ -123,6 +128,7 @@ class DualArm {
   std::unique_ptr<RobotDynamics> dynamics_;
   std::array<std::unique_ptr<ArmState>, 2> arms_;
   IkStats ik_stats_;
+  std::shared_ptr<IkSolveTimes> solve_times_;
   double max_tracking_error_ = 0.0;
   std::string failure_detail_;
 };

@@ -1,5 +1,6 @@
 // configs/corridor_pc_arms.yaml end to end through run_experiment, shrunk to a
-// few demonstrations, trials and updates: the trials run on the robot's arms.
+// few demonstrations, trials and updates: the trials run on the robot's arms, and
+// the run records the robot's metrics and prints its IK time.
 #include <gtest/gtest.h>
 
 #include "report/run_summaries.hpp"
@@ -29,6 +30,16 @@ TEST(CorridorArmsRun, ATinyRunEvaluatesItsTrialsOnTheArms) {
             (std::vector<std::string>{"out of reach", "joint limit", "self collision",
                                       "tracking error", "physics fault"}));
   EXPECT_EQ(runs.front().metrics.count("failures_out_of_reach"), 1u);
+  // The robot's run metrics are recorded; its IK wall time is printed only.
+  for (const char* metric : {"ik_solves", "ik_success_rate", "joint_tracking_error_mean_rad",
+                             "joint_tracking_error_max_rad"}) {
+    EXPECT_EQ(runs.front().metrics.count(metric), 1u) << metric;
+  }
+  EXPECT_GT(runs.front().metrics.at("ik_solves"), 0.0);
+  EXPECT_NE(run.out.find("IK time (corridor_pc_arms): "), std::string::npos) << run.out;
+  for (const auto& [name, value] : runs.front().metrics) {
+    if (name.rfind("ik_", 0) == 0) EXPECT_TRUE(name == "ik_solves" || name == "ik_success_rate");
+  }
 }
 
 TEST(CorridorArmsRun, AnUnknownRobotTypeIsAConfigErrorNamingTheKey) {

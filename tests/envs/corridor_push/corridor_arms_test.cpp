@@ -1,6 +1,8 @@
 // The corridor task executed by the dual-arm torso's right arm.
+#include <gmock/gmock.h>
 #include <gtest/gtest.h>
 
+#include <cmath>
 #include <opencv2/core.hpp>
 
 #include "core/parameter_error.hpp"
@@ -93,13 +95,70 @@ TEST(CorridorOnArms, AnUnusableRobotIsRefusedNamingTheKey) {
   CorridorPushParams params;
   params.robot.dual_arm.urdf = "assets/robots/none.urdf";
   params.robot.type = "dual_arm";
-  try {
-    CorridorPush env{params};
-    FAIL() << "no error";
-  } catch (const ParameterError& e) {
-    EXPECT_EQ(e.key(), "robot");
-    EXPECT_NE(std::string(e.what()).find("assets/robots/none.urdf"), std::string::npos);
-  }
+  const auto build = [&] { CorridorPush env{params}; };
+  EXPECT_THAT(
+      build, ::testing::Throws<ParameterError>(::testing::Property(&ParameterError::key, "robot")));
+  EXPECT_THAT(build, ::testing::ThrowsMessage<ParameterError>(
+                         ::testing::HasSubstr("assets/robots/none.urdf")));
+}
+
+// The base offset is drawn after the floating task's keys, which stay as they were, and only
+// when its range is set: a zero range leaves the scenarios unchanged.
+TEST(CorridorOnArms, TheBaseOffsetIsDrawnLastAndOnlyWhenSet) {
+  CorridorPushParams offset = on_arms();
+  offset.base_offset_range = {0.1, 0.05, 0.0};
+  offset.object_noise = 0.01;
+  CorridorPushParams still = on_arms();
+  still.object_noise = 0.01;
+  CorridorPushParams floating;
+  floating.object_noise = 0.01;
+  Rng a(3), b(3), c(3);
+  Scenario with = CorridorPush{offset}.sample_scenario(a);
+  const Scenario without = CorridorPush{still}.sample_scenario(b);
+  EXPECT_EQ(without, CorridorPush{floating}.sample_scenario(c));
+  EXPECT_EQ(without.count("base_dx"), 0u);
+  EXPECT_LE(std::abs(with.at("base_dx")), 0.1);
+  EXPECT_LE(std::abs(with.at("base_dy")), 0.05);
+  EXPECT_NE(with.at("base_dx"), 0.0);
+  EXPECT_EQ(with.at("base_dz"), 0.0);
+  for (const char* key : {"base_dx", "base_dy", "base_dz"}) with.erase(key);
+  EXPECT_EQ(with, without);
+}
+
+// The offset moves the robot's base: the corridor and the object stay where they are in the
+// world, so they move relative to the robot.
+TEST(CorridorOnArms, TheBaseOffsetMovesTheCorridorRelativeToTheRobot) {
+  CorridorPush env{on_arms()};
+  const auto base_of = [&] {  // the torso, fixed on the base link
+    for (const PlacedShape& shape : env.robot()->shapes())
+      if (shape.link == "torso") return Eigen::Vector3d(shape.shape.origin.translation());
+    ADD_FAILURE() << "no shape of the torso";
+    return Eigen::Vector3d(Eigen::Vector3d::Zero());
+  };
+  env.reset(kPush);
+  const Eigen::Vector3d base = base_of(), object = env.object_position();
+  const double corridor = env.corridor_x();
+  Scenario moved = kPush;
+  moved["base_dx"] = -0.05;
+  moved["base_dy"] = 0.03;
+  env.reset(moved);
+  EXPECT_LT((base_of() - base - Eigen::Vector3d(-0.05, 0.03, 0.0)).norm(), 1e-6);
+  EXPECT_EQ(env.corridor_x(), corridor);
+  EXPECT_LT((env.object_position() - object).norm(), 1e-6);
+  const Eigen::MatrixXd path = sample_path({{0.45, -0.285, 0.07}, {0.45, -0.25, 0.07}}, 10, {1.0});
+  EXPECT_EQ(env.execute("pre", path), "");  // still within reach
+  // Far enough back, the start is out of the arm's reach: the trial fails at reset.
+  moved["base_dx"] = -1.5;
+  env.reset(moved);
+  EXPECT_EQ(env.execute("pre", path), "out of reach");
+}
+
+TEST(CorridorOnArms, FloatingGrippersRefuseABaseOffset) {
+  CorridorPushParams floating;
+  floating.base_offset_range = {0.1, 0.0, 0.0};
+  const auto build = [&] { CorridorPush env{floating}; };
+  EXPECT_THAT(build, ::testing::Throws<ParameterError>(
+                         ::testing::Property(&ParameterError::key, "base_offset_range")));
 }
 
 }  // namespace

@@ -4,11 +4,14 @@
 // orientations; a bar out of reach and a base moved away fail "out of reach";
 // the start of a trial replays bit for bit; the arms are drawn for the head camera in
 // colours the rope-end segmentation does not take; the base offset is drawn
-// after the other scenario keys.
+// after the other scenario keys; trials keep the robot's figures for the run's metrics.
+#include <gmock/gmock.h>
 #include <gtest/gtest.h>
 
 #include <algorithm>
 #include <cmath>
+#include <map>
+#include <memory>
 #include <string>
 
 #include "core/config/config_loader.hpp"
@@ -82,6 +85,32 @@ TEST(RopeKnotOnArms, AnArmFailureIsTheTrialsFailureCategory) {
   EXPECT_FALSE(env.outcome().success);
 }
 
+// A trial's row keeps the robot's figures, and the run's metrics and IK time come from them
+// (sim/robot/robot_run_metrics.hpp); floating grippers add none.
+TEST(RopeKnotOnArms, TrialsKeepTheRobotsFiguresAndTheRunReportsThem) {
+  RopeKnotEnvironmentParams params;
+  params.task = on_arms();
+  RopeKnot env(params);
+  const std::unique_ptr<Environment> clone = env.clone();
+  clone->reset({});
+  ASSERT_EQ(clone->execute("pre", pre_waypoints(params.task).topRows(10)), "");
+  EvaluatedTrial trial;
+  trial.details = clone->outcome().details;
+  EXPECT_GT(trial.details.at("ik_solves"), 0.0);
+  EXPECT_EQ(trial.details.at("ik_failures"), 0.0);
+  EXPECT_GT(trial.details.at("max_tracking_error"), 0.0);
+  // The clone's solves are timed with the environment it was cloned from.
+  const Environment::RunAdditions added = env.run_additions({trial}, "r");
+  std::map<std::string, double> metrics;
+  for (const Metric& m : added.metrics) metrics[m.name] = m.value;
+  EXPECT_EQ(metrics.at("ik_success_rate"), 1.0);
+  EXPECT_EQ(metrics.at("ik_solves"), trial.details.at("ik_solves"));
+  EXPECT_EQ(added.tables.rfind("IK time (r): ", 0), 0u) << added.tables;
+  const RopeKnot floating(RopeKnotEnvironmentParams{});
+  EXPECT_EQ(floating.outcome().details.count("ik_solves"), 0u);
+  EXPECT_TRUE(floating.run_additions({trial}, "r").metrics.empty());
+}
+
 TEST(RopeKnotOnArms, TheStartOfATrialReplaysBitwise) {
   const Scenario scenario{{"grasp_offset", 0.01}, {"drift_y", -0.01}, {"base_dy", 0.02}};
   const Eigen::MatrixXd rows = pre_waypoints(on_arms()).topRows(10);
@@ -136,13 +165,11 @@ TEST(RopeKnotOnArms, TheBaseOffsetIsDrawnAfterTheOtherKeys) {
 TEST(RopeKnotOnArms, AnUnusableRobotIsRefusedNamingTheKey) {
   RopeKnotParams params = on_arms();
   params.robot.dual_arm.urdf = "assets/robots/none.urdf";
-  try {
-    RopeKnotScene scene{params};
-    FAIL() << "no error";
-  } catch (const ParameterError& e) {
-    EXPECT_EQ(e.key(), "robot");
-    EXPECT_NE(std::string(e.what()).find("assets/robots/none.urdf"), std::string::npos);
-  }
+  const auto build = [&] { RopeKnotScene scene{params}; };
+  EXPECT_THAT(
+      build, ::testing::Throws<ParameterError>(::testing::Property(&ParameterError::key, "robot")));
+  EXPECT_THAT(build, ::testing::ThrowsMessage<ParameterError>(
+                         ::testing::HasSubstr("assets/robots/none.urdf")));
 }
 
 TEST(RopeKnotOnArms, AStartOutOfReachKeepsTheStartAsTheCommand) {

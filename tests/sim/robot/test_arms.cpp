@@ -1,6 +1,7 @@
 #include "test_arms.hpp"
 
 #include <string>
+#include <utility>
 
 namespace corrmp::test {
 
@@ -106,13 +107,19 @@ void add_arm(RobotModel& model, const std::string& prefix, const std::string& pa
   model.joints.push_back(fixed(prefix + "ee_joint", previous, ee.name, pose({0, 0, 0.08})));
 }
 
+// A model called `name` of the root link `root` alone.
+RobotModel rooted_at(const std::string& name, RobotLink root) {
+  RobotModel model;
+  model.name = name;
+  model.root = root.name;
+  model.links.push_back(std::move(root));
+  return model;
+}
+
 }  // namespace
 
 RobotModel three_joint_arm() {
-  RobotModel model;
-  model.name = "three_joint_arm";
-  model.root = "base";
-  model.links.push_back(box_link("base", 5.0, {0.2, 0.2, 0.1}));
+  RobotModel model = rooted_at("three_joint_arm", box_link("base", 5.0, {0.2, 0.2, 0.1}));
   model.links.push_back(cylinder_link("link1", 2.0, 0.05, 0.3));
   RobotLink link2 = box_link("link2", 1.5, {0.06, 0.06, 0.4});
   link2.inertial_origin = pose({0.01, -0.005, 0.2}, {0.3, -0.2, 0.5});
@@ -138,19 +145,13 @@ RobotModel three_joint_arm() {
 }
 
 RobotModel seven_joint_arm() {
-  RobotModel model;
-  model.name = "seven_joint_arm";
-  model.root = "base";
-  model.links.push_back(box_link("base", 5.0, {0.2, 0.2, 0.1}));
+  RobotModel model = rooted_at("seven_joint_arm", box_link("base", 5.0, {0.2, 0.2, 0.1}));
   add_arm(model, "", "base", pose({0, 0, 0.1}));
   return model;
 }
 
 RobotModel dual_arm() {
-  RobotModel model;
-  model.name = "dual_arm";
-  model.root = "torso";
-  model.links.push_back(box_link("torso", 20.0, {0.2, 0.4, 0.5}));
+  RobotModel model = rooted_at("dual_arm", box_link("torso", 20.0, {0.2, 0.4, 0.5}));
   add_arm(model, "left_", "torso", pose({0, 0.25, 0.4}, {-1.5708, 0, 0}));
   add_arm(model, "right_", "torso", pose({0, -0.25, 0.4}, {1.5708, 0, 0}));
   return model;
