@@ -162,9 +162,11 @@ void write_trajectory_figure(const std::vector<EvaluatedTrial>& trials, const Ta
     legend += fmt::format("{}{} {}", legend.empty() ? "" : ", ", segment,
                           segment_colour(segment_order, segment).name);
   }
+  const bool executed = std::any_of(trials.begin(), trials.end(),
+                                    [](const EvaluatedTrial& t) { return !t.executed.empty(); });
   put_text(canvas,
-           fmt::format("{} up against {} right; grey: expert; generated {}; dashed: executed",
-                       vertical, horizontal, legend),
+           fmt::format("{} up against {} right; grey: expert; generated {}{}", vertical, horizontal,
+                       legend, executed ? "; dashed: executed" : ""),
            {8, 20}, 0.45);
   for (int i = 0; i < count; ++i) {
     const EvaluatedTrial& trial = trials[i];

@@ -23,9 +23,10 @@ void write_trajectory_csv(const std::vector<EvaluatedTrial>& trials, const TaskR
 // plot columns (TaskReport::plot_vertical against plot_horizontal) in world
 // coordinates, all panels on the same axes; the expert's path thick and grey
 // beneath the generated one, coloured by the segment's place in
-// `segment_order` (blue, orange, green, ...), the executed path thin and
-// dashed over it in a darker shade of that colour; the title names the trial, the
-// expected and chosen decisions and whether it succeeded.
+// `segment_order` (blue, orange, green, ...), the executed path (if any)
+// thin and dashed over it in a darker shade of that colour, as the caption
+// says; the title names the trial, the expected and chosen decisions and
+// whether it succeeded.
 constexpr int kTrajectoryColumns = 5;
 constexpr int kTrajectoryPanelWidth = 300;
 constexpr int kTrajectoryPanelHeight = 220;
