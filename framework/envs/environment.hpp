@@ -89,6 +89,12 @@ class Environment {
   // a whole-skill "full", is absolute). Returns "" on success or why
   // execution stopped (a physics blow-up, an invalid point).
   virtual std::string execute(const std::string& segment, const Eigen::MatrixXd& trajectory) = 0;
+  // Where the effectors actually were during the last execute(): per
+  // trajectory row the command reached, in order, the row of the effectors'
+  // positions then, in the trajectory's columns and frame (offsets in the
+  // relative columns of a relative segment). Rows stop where execution
+  // stopped. Empty when the task does not record it.
+  virtual Eigen::MatrixXd executed_path() const { return {}; }
   virtual Observation observe(bool with_image) = 0;
   // The size of the images observe(true) takes; empty without a camera.
   virtual cv::Size camera_size() const { return {}; }

@@ -149,6 +149,43 @@ void split_at_reference_phases(SharedModels& models, const std::string& whole,
   }
 }
 
+// A whole-skill policy's executed path cut as split_at_reference_phases cuts
+// what it generated: `executed` holds rows of the whole skill's uniform query
+// over `points` rows; each segment's rows are interpolated at the segment's
+// reference phases, as far as the execution got; a relative segment's are
+// offsets from its generated origin.
+void split_executed_at_reference_phases(const Eigen::MatrixXd& executed, int points,
+                                        const TaskReport& task,
+                                        const std::vector<SegmentInfo>& segments,
+                                        const Demonstration& reference, EvaluatedTrial& out) {
+  if (executed.rows() == 0 || points < 2) return;
+  const double last = static_cast<double>(executed.rows() - 1);
+  for (const auto& s : segments) {
+    const SegmentTrajectory* demonstrated = reference.find(s.name);
+    if (demonstrated == nullptr || !out.generated.count(s.name)) continue;
+    const Eigen::VectorXd phases =
+        Eigen::VectorXd::LinSpaced(s.points, demonstrated->phase_begin, demonstrated->phase_end);
+    Eigen::MatrixXd path(s.points, executed.cols());
+    Eigen::Index rows = 0;
+    for (; rows < phases.size(); ++rows) {
+      const double at = phases(rows) * (points - 1);
+      if (!(at >= 0.0 && at <= last + 1e-9)) break;
+      const Eigen::Index below =
+          std::min(static_cast<Eigen::Index>(std::floor(at)), static_cast<Eigen::Index>(last));
+      const Eigen::Index above = std::min(below + 1, static_cast<Eigen::Index>(last));
+      const double fraction = std::min(at - static_cast<double>(below), 1.0);
+      path.row(rows) = (1.0 - fraction) * executed.row(below) + fraction * executed.row(above);
+    }
+    if (rows == 0) continue;
+    path.conservativeResize(rows, executed.cols());
+    const auto origin = out.origins.find(s.name);
+    if (s.relative && origin != out.origins.end()) {
+      for (int c : relative_columns_of(task, path.cols())) path.col(c).array() -= origin->second(c);
+    }
+    out.executed[s.name] = path;
+  }
+}
+
 Eigen::MatrixXd error_columns_of(const Eigen::MatrixXd& path, const std::vector<int>& columns) {
   if (columns.empty()) return path;
   Eigen::MatrixXd out(path.rows(), static_cast<Eigen::Index>(columns.size()));
@@ -236,6 +273,13 @@ EvaluatedTrial run_trial(int index, const Scenario& scenario, Environment& envir
       if (info->relative) trial.origins[segment] = environment.effector_position();
     }
     failure = environment.execute(segment, path);
+    const Eigen::MatrixXd executed = environment.executed_path();
+    if (info == nullptr) {
+      split_executed_at_reference_phases(executed, points, setting.task, env_segments, reference,
+                                         trial);
+    } else if (executed.rows() > 0) {
+      trial.executed[segment] = executed;
+    }
     if (!failure.empty()) break;
   }
   const Outcome outcome = environment.outcome();
@@ -313,6 +357,7 @@ EnvironmentEvaluation evaluate_in_environment(Environment& environment, Demonstr
     for (auto it = trial.generated.begin(); it != trial.generated.end();) {
       const auto demonstrated = run.reference.find(it->first);
       if (demonstrated == run.reference.end() || demonstrated->second.rows() != it->second.rows()) {
+        trial.executed.erase(it->first);
         it = trial.generated.erase(it);
         continue;
       }

@@ -8,8 +8,10 @@
 #include <limits>
 #include <opencv2/imgproc.hpp>
 #include <stdexcept>
+#include <vector>
 
 #include "plot/plot_canvas.hpp"
+#include "plot/plot_lines.hpp"
 
 namespace corrmp {
 
@@ -17,6 +19,7 @@ namespace {
 
 const cv::Scalar kExpertGrey(190, 190, 190);
 const cv::Scalar kFailedRed(30, 30, 200);  // BGR
+constexpr double kExecutedShade = 0.45;    // of the segment's colour
 
 // The segments' colours in execution order: blue, orange, green, purple, brown.
 struct SegmentColour {
@@ -58,6 +61,16 @@ void draw_path(cv::Mat& canvas, const PlotPanel& panel, const TaskReport& task,
   }
 }
 
+// Dashed over the generated path, in the segment's colour darkened: where the
+// execution follows the command, the generated line shows between the dashes.
+void draw_executed(cv::Mat& canvas, const PlotPanel& panel, const TaskReport& task,
+                   const Eigen::MatrixXd& path, const cv::Scalar& segment_bgr) {
+  const int h = task.plot_horizontal, v = task.plot_vertical;
+  const std::vector<double> x(path.col(h).data(), path.col(h).data() + path.rows());
+  const std::vector<double> y(path.col(v).data(), path.col(v).data() + path.rows());
+  draw_polyline(canvas, panel, x, y, segment_bgr * kExecutedShade, 1, true);
+}
+
 }  // namespace
 
 void write_trajectory_csv(const std::vector<EvaluatedTrial>& trials, const TaskReport& task,
@@ -67,6 +80,7 @@ void write_trajectory_csv(const std::vector<EvaluatedTrial>& trials, const TaskR
   out.print("trial,segment,step");
   for (const auto& c : columns) out.print(",{}", c);
   for (const auto& c : columns) out.print(",expert_{}", c);
+  for (const auto& c : columns) out.print(",executed_{}", c);
   out.print("\n");
   const auto width = static_cast<Eigen::Index>(columns.size());
   for (const auto& trial : trials) {
@@ -77,12 +91,30 @@ void write_trajectory_csv(const std::vector<EvaluatedTrial>& trials, const TaskR
             "write_trajectory_csv: trial {} segment '{}' has {} columns, the task declares {}",
             trial.trial, segment, relative.cols(), width));
       }
+      const auto executed_relative = trial.executed.find(segment);
+      if (executed_relative != trial.executed.end() && executed_relative->second.cols() != width) {
+        throw std::invalid_argument(fmt::format(
+            "write_trajectory_csv: trial {} segment '{}' has {} executed columns, the task "
+            "declares {}",
+            trial.trial, segment, executed_relative->second.cols(), width));
+      }
       const Eigen::MatrixXd generated = in_world(trial, task, segment, relative);
       const Eigen::MatrixXd expert = in_world(trial, task, segment, expert_relative);
+      const Eigen::MatrixXd executed =
+          executed_relative == trial.executed.end()
+              ? Eigen::MatrixXd(0, width)
+              : in_world(trial, task, segment, executed_relative->second);
       for (Eigen::Index t = 0; t < generated.rows(); ++t) {
         out.print("{},{},{}", trial.trial, segment, t);
         for (Eigen::Index c = 0; c < width; ++c) out.print(",{}", generated(t, c));
         for (Eigen::Index c = 0; c < width; ++c) out.print(",{}", expert(t, c));
+        for (Eigen::Index c = 0; c < width; ++c) {
+          if (t < executed.rows()) {
+            out.print(",{}", executed(t, c));
+          } else {
+            out.print(",");
+          }
+        }
         out.print("\n");
       }
     }
@@ -103,7 +135,7 @@ void write_trajectory_figure(const std::vector<EvaluatedTrial>& trials, const Ta
         fmt::format("{}: plot columns {} and {} of a {}-column trajectory", kWhere, h, v, width));
   }
   for (const auto& trial : trials) {
-    for (const auto* paths : {&trial.generated, &trial.expert}) {
+    for (const auto* paths : {&trial.generated, &trial.expert, &trial.executed}) {
       for (const auto& [segment, relative_path] : *paths) {
         const Eigen::MatrixXd path = in_world(trial, task, segment, relative_path);
         if (path.rows() == 0 || !path.allFinite() || path.cols() != width) continue;
@@ -130,9 +162,11 @@ void write_trajectory_figure(const std::vector<EvaluatedTrial>& trials, const Ta
     legend += fmt::format("{}{} {}", legend.empty() ? "" : ", ", segment,
                           segment_colour(segment_order, segment).name);
   }
+  const bool executed = std::any_of(trials.begin(), trials.end(),
+                                    [](const EvaluatedTrial& t) { return !t.executed.empty(); });
   put_text(canvas,
-           fmt::format("{} up against {} right; grey: expert; generated {}", vertical, horizontal,
-                       legend),
+           fmt::format("{} up against {} right; grey: expert; generated {}{}", vertical, horizontal,
+                       legend, executed ? "; dashed: executed" : ""),
            {8, 20}, 0.45);
   for (int i = 0; i < count; ++i) {
     const EvaluatedTrial& trial = trials[i];
@@ -157,6 +191,12 @@ void write_trajectory_figure(const std::vector<EvaluatedTrial>& trials, const Ta
       if (path.cols() == width) {
         draw_path(canvas, panel, task, in_world(trial, task, segment, path),
                   segment_colour(segment_order, segment).bgr, 1);
+      }
+    }
+    for (const auto& [segment, path] : trial.executed) {
+      if (path.cols() == width) {
+        draw_executed(canvas, panel, task, in_world(trial, task, segment, path),
+                      segment_colour(segment_order, segment).bgr);
       }
     }
   }

@@ -28,6 +28,7 @@ namespace {
 constexpr double kNaN = std::numeric_limits<double>::quiet_NaN();
 const char* const kFiguresFolder = "figures";
 const cv::Scalar kGroundTruthGrey(150, 150, 150);
+const cv::Scalar kExecutionBlack(0, 0, 0);
 
 // ---- shared -------------------------------------------------------------
 
@@ -104,6 +105,7 @@ std::string relative_figure(const std::string& name) {
 
 struct SegmentPath {
   std::vector<double> h, v, expert_h, expert_v;
+  std::vector<double> executed_h, executed_v;  // NaN where not executed; empty: not in the file
 };
 struct TrialPaths {
   std::vector<std::pair<std::string, SegmentPath>> segments;  // in file order
@@ -115,11 +117,22 @@ struct TrialPaths {
   }
 };
 
+// The index of column `name`, if the header has it.
+std::optional<size_t> optional_column(const std::vector<std::string>& header,
+                                      const std::string& name) {
+  const auto it = std::find(header.begin(), header.end(), name);
+  if (it == header.end()) return std::nullopt;
+  return static_cast<size_t>(it - header.begin());
+}
+
 // The wanted trials' paths in the view's columns, scaled; every segment's name
-// in order of first appearance goes to `segment_order`.
+// in order of first appearance goes to `segment_order`. The executed path is
+// read when the file has its columns (files written before it was recorded do
+// not); `has_executed` says whether it has.
 std::map<int, TrialPaths> read_trajectories(const std::string& path, const TrajectoryView& view,
                                             const std::set<int>& wanted,
-                                            std::vector<std::string>& segment_order) {
+                                            std::vector<std::string>& segment_order,
+                                            bool& has_executed) {
   std::ifstream in(path);
   std::string line;
   if (!in || !std::getline(in, line)) throw std::runtime_error("cannot read '" + path + "'");
@@ -130,6 +143,9 @@ std::map<int, TrialPaths> read_trajectories(const std::string& path, const Traje
   const size_t v = column_index(header, view.vertical, path);
   const size_t eh = column_index(header, "expert_" + view.horizontal, path);
   const size_t ev = column_index(header, "expert_" + view.vertical, path);
+  const auto xh = optional_column(header, "executed_" + view.horizontal);
+  const auto xv = optional_column(header, "executed_" + view.vertical);
+  has_executed = xh && xv;
   const size_t needed = std::max({trial, segment, h, v, eh, ev}) + 1;
   std::map<int, TrialPaths> trials;
   while (std::getline(in, line)) {
@@ -149,6 +165,10 @@ std::map<int, TrialPaths> read_trajectories(const std::string& path, const Traje
     p->v.push_back(view.scale * number_or_nan(cells[v]));
     p->expert_h.push_back(view.scale * number_or_nan(cells[eh]));
     p->expert_v.push_back(view.scale * number_or_nan(cells[ev]));
+    if (has_executed) {
+      p->executed_h.push_back(*xh < cells.size() ? view.scale * number_or_nan(cells[*xh]) : kNaN);
+      p->executed_v.push_back(*xv < cells.size() ? view.scale * number_or_nan(cells[*xv]) : kNaN);
+    }
   }
   return trials;
 }
@@ -173,12 +193,24 @@ cv::Scalar segment_colour(const std::vector<std::string>& order, const std::stri
   return series_colour(static_cast<size_t>(it - order.begin()));
 }
 
+// Whether the path has an executed point to draw.
+bool executed_drawn(const SegmentPath& path) {
+  for (size_t i = 0; i < path.executed_h.size() && i < path.executed_v.size(); ++i) {
+    if (std::isfinite(path.executed_h[i]) && std::isfinite(path.executed_v[i])) return true;
+  }
+  return false;
+}
+
 void add_paths(LinePanel& panel, const std::string& segment, const SegmentPath& path,
                const std::vector<std::string>& order) {
-  // Every expert path first, so the predictions are drawn over them.
+  // Every expert path first, so the predictions are drawn over them, and the
+  // executions over those.
   panel.lines.insert(panel.lines.begin(),
                      PlotLine{path.expert_h, path.expert_v, kGroundTruthGrey, 2, true});
   panel.lines.push_back(PlotLine{path.h, path.v, segment_colour(order, segment), 2, false});
+  if (executed_drawn(path)) {
+    panel.lines.push_back(PlotLine{path.executed_h, path.executed_v, kExecutionBlack, 1, false});
+  }
 }
 
 // ---- 2. success against a parameter --------------------------------------
@@ -319,8 +351,9 @@ void add_trajectory_comparison(FigureSet& set, const RunSummary& run, const RunF
   }
   std::vector<std::string> order = view.segments;
   std::map<int, TrialPaths> paths;
+  bool has_executed = false;
   try {
-    paths = read_trajectories(csv.string(), view, wanted, order);
+    paths = read_trajectories(csv.string(), view, wanted, order, has_executed);
   } catch (const std::runtime_error& e) {
     set.notes.push_back(fmt::format("{}: skipped, {}", figure, e.what()));
     return;
@@ -341,6 +374,11 @@ void add_trajectory_comparison(FigureSet& set, const RunSummary& run, const RunF
       plot.legend.push_back({"prediction " + segment, segment_colour(order, segment), 2, false});
     }
   }
+  const bool executed = std::any_of(paths.begin(), paths.end(), [](const auto& trial) {
+    return std::any_of(trial.second.segments.begin(), trial.second.segments.end(),
+                       [](const auto& segment) { return executed_drawn(segment.second); });
+  });
+  if (executed) plot.legend.push_back({"execution", kExecutionBlack, 1, false});
   const std::string x_label = fmt::format("{} ({})", view.horizontal, view.unit);
   std::vector<LinePanel> whole, focus;
   std::string chosen_text;
@@ -378,15 +416,26 @@ void add_trajectory_comparison(FigureSet& set, const RunSummary& run, const RunF
   write_png(draw_line_figure(plot), figure_path(report_dir, name).string(),
             "add_trajectory_comparison");
 
+  const std::string curves =
+      executed ? "the expert's demonstration of the trial's scenario (ground truth, grey dashed), "
+                 "the trajectory the policy generated (prediction, coloured by segment) and the "
+                 "path the effectors executed following it (execution, thin black)"
+               : "the expert's demonstration of the trial's scenario (ground truth, grey dashed) "
+                 "and the trajectory the policy generated (prediction, coloured by segment)";
   std::string caption = fmt::format(
-      "Ground truth vs prediction, {} (the paper's comparison of ground truth, prediction and "
-      "execution for the {}-MPs): for one trial of each expected correction ({}), the expert's "
-      "demonstration of the trial's scenario (ground truth, grey dashed) and the trajectory the "
-      "policy generated (prediction, coloured by segment), top view in {}; below, the {} segment "
-      "alone (in a single column, beside it). The paper's third curve, the executed motion, is "
-      "not drawn: trajectories.csv holds the generated and the expert trajectories only, and the "
-      "generated one is what the gripper was commanded to follow",
-      run_name(run), view.focus_segment, chosen_text, view.unit, view.focus_segment);
+      "Ground truth vs prediction{}, {} (the paper's comparison of ground truth, prediction and "
+      "execution for the {}-MPs): for one trial of each expected correction ({}), {}, top view in "
+      "{}; below, the {} segment alone (in a single column, beside it)",
+      executed ? " vs execution" : "", run_name(run), view.focus_segment, chosen_text, curves,
+      view.unit, view.focus_segment);
+  if (!executed) {
+    caption += has_executed ? ". The paper's third curve, the executed motion, is not drawn: the "
+                              "task recorded no executed path for these trials"
+                            : ". The paper's third curve, the executed motion, is not drawn: "
+                              "this trajectories.csv has no executed columns (it was written "
+                              "before executions were recorded), only the generated and the "
+                              "expert trajectories";
+  }
   if (!view.execution_note.empty()) caption += "; " + view.execution_note;
   if (!absent.empty()) {
     std::string list;

@@ -1,10 +1,10 @@
 // The reproduction report's figures (report --reproduction; docs/sweeps.md,
 // "Comparing and reporting"), drawn from a sweep's runs and the files in
 // their run directories:
-//  1. ground truth against prediction for one trial of each expected
-//     correction (the paper's Fig. "Comparison of ground-truth, prediction,
-//     and robot execution for different cor-MPs"), from trajectories.csv of
-//     the first seed's run;
+//  1. ground truth against prediction and execution for one trial of each
+//     expected correction (the paper's Fig. "Comparison of ground-truth,
+//     prediction, and robot execution for different cor-MPs"), from
+//     trajectories.csv of the first seed's run;
 //  2. task success against a swept numeric parameter, or per experiment for a
 //     sweep over seeds only: the mean across seeds with its 95% interval;
 //  3. training curves (loss and validation error against updates per
@@ -95,7 +95,9 @@ struct TrajectoryView {
 // whose choice matched and succeeded, else whose choice matched, else the
 // first): the whole skill above, the focus segment below, the expert's path
 // (ground truth, grey dashed) beneath the generated one (prediction, coloured
-// by segment); a single column's two panels side by side. Written to
+// by segment) and, where the file has executed_ columns with values, the
+// executed path over it (execution, thin black; the legend and caption name
+// it only when drawn); a single column's two panels side by side. Written to
 // report_dir/figures/<name>.png.
 constexpr int kTrajectoryComparisonPanel = 320;  // width and height of a panel
 void add_trajectory_comparison(FigureSet& set, const RunSummary& run, const RunFiles& files,

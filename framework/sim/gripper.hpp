@@ -13,6 +13,9 @@ struct TrackingResult {
   bool ok = true;
   std::string failure;  // why tracking stopped early
   int ticks = 0;
+  // Per waypoint reached, in order: where the effector was when the command
+  // reached it (rows x, y, z); rows stop where tracking stopped.
+  Eigen::MatrixXd reached;
 };
 
 class Gripper {
@@ -23,6 +26,7 @@ class Gripper {
   virtual void set_closed(bool closed) = 0;
   // Moves through the waypoints (rows x, y, z), stepping the world every tick.
   // `check` runs after each tick; a non-empty string stops the motion as a failure.
+  // TrackingResult::reached holds the position() at each waypoint reached.
   virtual TrackingResult follow(const Eigen::MatrixXd& waypoints,
                                 const std::function<std::string()>& check) = 0;
 };

@@ -57,13 +57,16 @@ void KinematicGripper::place(const Eigen::Vector3d& position) {
 
 TrackingResult KinematicGripper::follow(const Eigen::MatrixXd& waypoints,
                                         const std::function<std::string()>& check) {
-  return step_through_waypoints(waypoints, params_.max_speed * world_.time_step(), position_, [&] {
-    place_bodies();
-    world_.step();
-    std::string failure = world_.blow_up();
-    if (failure.empty() && check) failure = check();
-    return failure;
-  });
+  return step_through_waypoints(
+      waypoints, params_.max_speed * world_.time_step(), position_,
+      [&] {
+        place_bodies();
+        world_.step();
+        std::string failure = world_.blow_up();
+        if (failure.empty() && check) failure = check();
+        return failure;
+      },
+      [&] { return position_; });
 }
 
 }  // namespace corrmp

@@ -1,5 +1,5 @@
 // Tests of the corridor task: determinism, the expert's success rate and
-// decisions, the correction classifier, path sampling, and parallel
+// decisions, the executed path, the correction classifier, path sampling, and parallel
 // collection with clones of the environment.
 #include "envs/corridor_push/corridor_push.hpp"
 
@@ -87,6 +87,27 @@ TEST(CorridorPush, TouchingTheCorridorFailsTheTrial) {
   const Outcome outcome = env.outcome();
   EXPECT_FALSE(outcome.success);
   EXPECT_EQ(outcome.failure, "the object touched the corridor");
+}
+
+TEST(CorridorPush, RecordsTheExecutedPathRowForRowUpToWhereExecutionStopped) {
+  CorridorPush env{CorridorPushParams{}};
+  env.reset({{"corridor_offset", 0.0}, {"object_dx", 0.0}, {"object_dy", 0.0}});
+  EXPECT_EQ(env.executed_path().rows(), 0);
+  const Eigen::Vector3d start = env.effector_position().transpose();
+  const Eigen::MatrixXd path = sample_path({start, start + Eigen::Vector3d(0.0, 0.03, 0.0)}, 20);
+  ASSERT_EQ(env.execute("pre", path), "");
+  // The floating gripper is where it was commanded at every row.
+  ASSERT_EQ(env.executed_path().rows(), path.rows());
+  ASSERT_EQ(env.executed_path().cols(), 3);
+  EXPECT_LT((env.executed_path() - path).cwiseAbs().maxCoeff(), 1e-12);
+  Eigen::MatrixXd broken = sample_path({path.bottomRows(1).transpose(), start}, 10);
+  broken(4, 1) = std::nan("");
+  EXPECT_NE(env.execute("cor", broken), "");
+  ASSERT_EQ(env.executed_path().rows(), 4);
+  EXPECT_LT((env.executed_path() - broken.topRows(4)).cwiseAbs().maxCoeff(), 1e-12);
+  // Nothing runs after a failure, and nothing is recorded.
+  EXPECT_NE(env.execute("post", path), "");
+  EXPECT_EQ(env.executed_path().rows(), 0);
 }
 
 // The same scenario demonstrated at two human tempos: the same strokes, the

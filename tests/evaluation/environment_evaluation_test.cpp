@@ -2,7 +2,8 @@
 // expert's own recording succeeds, makes the expert's decisions, and its
 // segments (cut at the reference's critical points) match the expert's; on a
 // made-up task, a relative segment starts from zero offsets and is executed
-// from where the effector is, and a trial that throws is a failed trial. Trials
+// from where the effector is, its executed path is kept up to where execution
+// stopped, and a trial that throws is a failed trial. Trials
 // run in parallel with the results of one thread, the extractor called in trial
 // order.
 #include "evaluation/environment_evaluation.hpp"
@@ -123,6 +124,13 @@ TEST(EnvironmentEvaluation, AWholeSkillPolicyIsCutAtTheReferencesCriticalPoints)
       EXPECT_LT((paths.generated.at(segment) - paths.expert.at(segment)).cwiseAbs().maxCoeff(),
                 0.005)
           << segment;
+      // The whole skill's execution, cut as its generation is: the floating
+      // gripper passed every commanded point.
+      ASSERT_EQ(paths.executed.count(segment), 1u) << segment;
+      EXPECT_EQ(paths.executed.at(segment).rows(), paths.generated.at(segment).rows());
+      EXPECT_LT((paths.executed.at(segment) - paths.generated.at(segment)).cwiseAbs().maxCoeff(),
+                0.002)
+          << segment;
     }
   }
   EXPECT_NE(result.tables.find("Table I (replay): 4 of 4 trials succeeded"), std::string::npos)
@@ -160,10 +168,19 @@ class LineTask : public Environment {
   }
   std::string execute(const std::string& segment, const Eigen::MatrixXd& rows) override {
     executed_.push_back(rows);
+    if (segment == stop_in_) {
+      // Stops after its first two rows, which it executed `lag` short.
+      reached_ = rows.topRows(2);
+      reached_.col(0).array() -= lag_;
+      return "stopped";
+    }
+    reached_ = rows;
+    reached_.col(0).array() -= lag_;
     position_ =
         segment == "nudge" ? position_ + rows(rows.rows() - 1, 0) : rows(rows.rows() - 1, 0);
     return "";
   }
+  Eigen::MatrixXd executed_path() const override { return record_ ? reached_ : Eigen::MatrixXd(); }
   Observation observe(bool) override { return {}; }
   std::vector<std::string> state_names() const override { return {}; }
   Outcome outcome() const override {
@@ -176,6 +193,10 @@ class LineTask : public Environment {
   double throw_below_ = -1.0;
   double position_ = 1.0;
   std::vector<Eigen::MatrixXd> executed_;
+  bool record_ = false;  // reports the executed path
+  double lag_ = 0.0;     // by which the execution falls short in column 0
+  std::string stop_in_;  // the segment whose execution stops
+  Eigen::MatrixXd reached_;
 };
 
 // The expert: to 2 (absolute), then 1.5 further (relative).
@@ -242,6 +263,35 @@ TEST(EnvironmentEvaluation, ARelativeSegmentStartsAtZeroAndRunsFromTheEffector) 
   EXPECT_NEAR(metrics.at("move_mp_error_max_m"), (0 + 0.25 + 0.5) / 3, 1e-12);
   EXPECT_NEAR(metrics.at("nudge_mp_error_max_m"), (0 + 0.25 + 0.5) / 3, 1e-12);
   EXPECT_EQ(metrics.at("decision_match_rate"), 1.0);
+}
+
+TEST(EnvironmentEvaluation, TheExecutedPathIsKeptPerSegmentUpToWhereExecutionStopped) {
+  LineTask task;
+  task.record_ = true;
+  task.lag_ = 0.125;
+  task.stop_in_ = "nudge";
+  LineExpert expert;
+  LinePolicy policy;
+  Rng rng(3);
+  const EnvironmentEvaluation result =
+      evaluate_in_environment(task, expert, nullptr, policy, 1, rng, "line");
+  ASSERT_EQ(result.evaluated.size(), 1u);
+  const EvaluatedTrial& trial = result.evaluated[0];
+  EXPECT_EQ(trial.failure, "stopped");
+  // In each segment's own frame, beside what was generated: offsets for the relative one.
+  Eigen::MatrixXd move(3, 2), nudge(2, 2);
+  move << 0.875, 7, 1.625, 7, 2.375, 7;
+  nudge << -0.125, 7, 0.375, 7;
+  EXPECT_EQ(trial.executed.at("move"), move);
+  EXPECT_EQ(trial.executed.at("nudge"), nudge);
+  EXPECT_EQ(trial.generated.at("nudge").rows(), 3);
+
+  LineTask silent;  // records no executed path
+  LinePolicy again;
+  Rng same(3);
+  EXPECT_TRUE(evaluate_in_environment(silent, expert, nullptr, again, 1, same, "line")
+                  .evaluated[0]
+                  .executed.empty());
 }
 
 TEST(EnvironmentEvaluation, ATrialThatThrowsIsAFailedTrialWithItsReason) {

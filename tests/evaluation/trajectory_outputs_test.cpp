@@ -1,5 +1,5 @@
 // Tests of the evaluation's trajectory outputs: the CSV's exact content and
-// the figure's layout, colours and errors.
+// the figure's layout, colours (the executed path's dashes) and errors.
 #include "evaluation/trajectory_outputs.hpp"
 
 #include <gmock/gmock.h>
@@ -40,22 +40,31 @@ EvaluatedTrial a_trial(int index, bool success) {
   return trial;
 }
 
-TEST(TrajectoryOutputs, CsvHoldsEveryGeneratedAndExpertPoint) {
+TEST(TrajectoryOutputs, CsvHoldsEveryGeneratedExpertAndExecutedPoint) {
   TempDir dir;
   EvaluatedTrial relative = a_trial(3, false);
   Eigen::RowVectorXd origin(3);
   origin << 1, 2, 3;
   relative.origins["cor"] = origin;
-  write_trajectory_csv({a_trial(0, true), relative}, xyz_task(), dir.file("t.csv"));
+  Eigen::MatrixXd stopped(1, 3);  // executed its first row only, 1 cm short in x
+  stopped << 0.41, -0.2, 0.03;
+  relative.executed["cor"] = stopped;
+  EvaluatedTrial executed = a_trial(0, true);
+  executed.executed["cor"] = executed.generated["cor"];
+  write_trajectory_csv({executed, relative, a_trial(5, true)}, xyz_task(), dir.file("t.csv"));
   std::stringstream text;
   text << std::ifstream(dir.file("t.csv")).rdbuf();
-  // The relative segment (offsets from (1, 2, 3)) is written in world coordinates.
+  // The relative segment (offsets from (1, 2, 3)) is written in world coordinates; rows
+  // not executed, and trials without an executed path, have empty executed fields.
   EXPECT_EQ(text.str(),
-            "trial,segment,step,x,y,z,expert_x,expert_y,expert_z\n"
-            "0,cor,0,0.42,-0.2,0.03,0.4,-0.2,0.03\n"
-            "0,cor,1,0.42,0,0.03,0.4,0,0.03\n"
-            "3,cor,0,1.42,1.8,3.03,1.4,1.8,3.03\n"
-            "3,cor,1,1.42,2,3.03,1.4,2,3.03\n");
+            "trial,segment,step,x,y,z,expert_x,expert_y,expert_z,executed_x,executed_y,"
+            "executed_z\n"
+            "0,cor,0,0.42,-0.2,0.03,0.4,-0.2,0.03,0.42,-0.2,0.03\n"
+            "0,cor,1,0.42,0,0.03,0.4,0,0.03,0.42,0,0.03\n"
+            "3,cor,0,1.42,1.8,3.03,1.4,1.8,3.03,1.41,1.8,3.03\n"
+            "3,cor,1,1.42,2,3.03,1.4,2,3.03,,,\n"
+            "5,cor,0,0.42,-0.2,0.03,0.4,-0.2,0.03,,,\n"
+            "5,cor,1,0.42,0,0.03,0.4,0,0.03,,,\n");
 }
 
 TEST(TrajectoryOutputs, CsvColumnsAreTheTasks) {
@@ -68,7 +77,12 @@ TEST(TrajectoryOutputs, CsvColumnsAreTheTasks) {
   write_trajectory_csv({a_trial(0, true)}, task, dir.file("t.csv"));
   std::string header;
   std::getline(std::ifstream(dir.file("t.csv")) >> std::ws, header);
-  EXPECT_EQ(header, "trial,segment,step,a,b,c,expert_a,expert_b,expert_c");
+  EXPECT_EQ(header,
+            "trial,segment,step,a,b,c,expert_a,expert_b,expert_c,executed_a,executed_b,executed_c");
+  EvaluatedTrial narrow = a_trial(0, true);
+  narrow.executed["cor"] = Eigen::MatrixXd::Zero(2, 2);
+  EXPECT_THAT([&] { write_trajectory_csv({narrow}, task, dir.file("t.csv")); },
+              ThrowsMessage<std::invalid_argument>(HasSubstr("2 executed columns")));
 }
 
 // The pixel nearest `colour` in the column `x`, rows y-1 .. y+1 (lines are
@@ -111,6 +125,32 @@ TEST(TrajectoryOutputs, FigureHasOnePanelPerTrialOnSharedAxes) {
                  kTrajectoryPanelWidth + left + width / 2, cv::Vec3b(30, 30, 200));
   EXPECT_GT(frame[2], 150);
   EXPECT_LT(frame[1], 100);
+}
+
+TEST(TrajectoryOutputs, FigureDrawsTheExecutedPathDashedInADarkerShade) {
+  TempDir dir;
+  EvaluatedTrial trial = a_trial(0, true);
+  Eigen::MatrixXd executed(2, 3);  // along y at x = 0.41, between the expert and the generated
+  executed << 0.41, -0.20, 0.03, 0.41, 0.00, 0.03;
+  trial.executed["cor"] = executed;
+  write_trajectory_figure({trial}, xyz_task(), {"pre", "cor", "post"}, dir.file("t.png"));
+  const cv::Mat image = cv::imread(dir.file("t.png"), cv::IMREAD_COLOR);
+  ASSERT_FALSE(image.empty());
+  // Halfway up the plot area (x from 0.39 to 0.43): dark orange dashes, white between them.
+  const int left = 52, top = kTrajectoryHeader + 24;
+  const int width = kTrajectoryPanelWidth - 52 - 12, height = kTrajectoryPanelHeight - 24 - 40;
+  const cv::Vec3b dark(9, 58, 108);  // orange (20, 130, 240) at 0.45
+  int dashes = 0, gaps = 0;
+  for (int column = left + width / 4; column < left + 3 * width / 4; ++column) {
+    const cv::Vec3b pixel = nearest_of(image, top + height / 2, column, dark);
+    if (cv::norm(pixel, dark) < 60) {
+      ++dashes;
+    } else if (pixel[0] > 200 && pixel[1] > 200 && pixel[2] > 200) {
+      ++gaps;
+    }
+  }
+  EXPECT_GT(dashes, width / 8);
+  EXPECT_GT(gaps, width / 16);
 }
 
 TEST(TrajectoryOutputs, FigureErrorsNameTheFunction) {

@@ -167,11 +167,67 @@ TEST(ReproductionFigures, GroundTruthAgainstPredictionHasAColumnPerExpectedCorre
   EXPECT_TRUE(contains(caption, "pull: trial 1, chose push, failed")) << caption;
   EXPECT_TRUE(contains(caption, "No trial of this run had the expected correction 'none'."))
       << caption;
-  EXPECT_TRUE(contains(caption, "executed motion, is not drawn")) << caption;
+  // A file written before executions were recorded: two curves, and the caption says why.
+  EXPECT_TRUE(contains(caption,
+                       "The paper's third curve, the executed motion, is not drawn: "
+                       "this trajectories.csv has no executed columns"))
+      << caption;
+  EXPECT_FALSE(contains(caption, "(execution, thin black)")) << caption;
   // Two columns (push, pull), two rows (the whole skill, the cor segment).
   EXPECT_EQ(
       png_size(dir.file("report/figures/gt.png")),
       cv::Size(2 * kTrajectoryComparisonPanel, kLineFigureHeader + 2 * kTrajectoryComparisonPanel));
+}
+
+// The near-black pixels of the figure at `path` in its two rows of panels (below the
+// heading and legend, whose height grows with the legend's rows).
+int dark_pixels_in_panels(const std::string& path) {
+  const cv::Mat image = cv::imread(path, cv::IMREAD_COLOR);
+  int dark = 0;
+  for (int y = image.rows - 2 * kTrajectoryComparisonPanel; y < image.rows; ++y) {
+    for (int x = 0; x < image.cols; ++x) {
+      const cv::Vec3b p = image.at<cv::Vec3b>(y, x);
+      dark += p[0] < 60 && p[1] < 60 && p[2] < 60;
+    }
+  }
+  return dark;
+}
+
+TEST(ReproductionFigures, ExecutedColumnsAddTheExecutionCurveAndTheCaptionNamesAllThree) {
+  TempDir dir;
+  write_trajectories(dir, "old");
+  write_trajectories(dir, "empty", testing::ExecutedColumns::empty);
+  write_trajectories(dir, "new", testing::ExecutedColumns::values);
+  const RunSummary run = run_of(1, "corridor_pc", {{"seed", "0"}}, 1.0);
+  FigureSet set;
+  for (const char* name : {"old", "empty", "new"}) {
+    add_trajectory_comparison(set, run, files_in(dir, name), kCorridorView, dir.file("report"),
+                              name);
+  }
+  ASSERT_TRUE(set.notes.empty()) << set.notes[0];
+  ASSERT_EQ(set.figures.size(), 3u);
+  const std::string& empty = set.figures[1].caption;
+  EXPECT_TRUE(contains(empty,
+                       "the executed motion, is not drawn: the task recorded no executed "
+                       "path for these trials"))
+      << empty;
+  const std::string& drawn = set.figures[2].caption;
+  EXPECT_TRUE(contains(drawn, "Ground truth vs prediction vs execution, corridor_pc run 1"))
+      << drawn;
+  EXPECT_TRUE(contains(drawn,
+                       "(ground truth, grey dashed), the trajectory the policy generated "
+                       "(prediction, coloured by segment) and the path the effectors "
+                       "executed following it (execution, thin black)"))
+      << drawn;
+  EXPECT_FALSE(contains(drawn, "not drawn")) << drawn;
+  // The same panels, with a thin black line along each of the 2 x 2 panels' paths.
+  const int without = dark_pixels_in_panels(dir.file("report/figures/old.png"));
+  EXPECT_EQ(dark_pixels_in_panels(dir.file("report/figures/empty.png")), without);
+  const int with = dark_pixels_in_panels(dir.file("report/figures/new.png"));
+  EXPECT_GT(with - without, 4 * kTrajectoryComparisonPanel / 2) << without << " -> " << with;
+  // The legend's "execution" entry takes a second row.
+  EXPECT_EQ(png_size(dir.file("report/figures/new.png")),
+            png_size(dir.file("report/figures/old.png")) + cv::Size(0, kLegendRowHeight));
 }
 
 TEST(ReproductionFigures, OneExpectedCorrectionPutsItsTwoPanelsSideBySide) {

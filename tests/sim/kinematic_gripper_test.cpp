@@ -1,4 +1,5 @@
-// Tests of the kinematic gripper: tracking accuracy, bounded speed, pushing.
+// Tests of the kinematic gripper: tracking accuracy, bounded speed, the
+// positions reported per waypoint, pushing.
 #include "sim/kinematic_gripper.hpp"
 
 #include <gtest/gtest.h>
@@ -35,6 +36,28 @@ TEST(KinematicGripper, TracksWaypointsExactlyAtBoundedSpeed) {
   EXPECT_NEAR(world.position(gripper.bodies()[1]).y(), 0.05, 1e-9);
 }
 
+TEST(KinematicGripper, ReportsWhereItWasAtEachWaypointReached) {
+  BulletWorld world(PhysicsParams{});
+  KinematicGripper gripper(world, GripperParams{}, Eigen::Vector3d(0, 0, 0.2));
+  Eigen::MatrixXd waypoints(4, 3);
+  waypoints << 0.0, 0.0, 0.2, 0.01, 0.0, 0.2, 0.01, 0.01, 0.2, 0.0, 0.01, 0.2;
+  const TrackingResult result = gripper.follow(waypoints, nullptr);
+  ASSERT_TRUE(result.ok) << result.failure;
+  // One row per waypoint, the first (where it already was) reached without a tick.
+  ASSERT_EQ(result.reached.rows(), 4);
+  ASSERT_EQ(result.reached.cols(), 3);
+  EXPECT_LT((result.reached - waypoints).cwiseAbs().maxCoeff(), 1e-12);
+  // Stopped on the way to the third waypoint: the first two rows.
+  gripper.place(Eigen::Vector3d(0, 0, 0.2));
+  int ticks = 0;
+  const TrackingResult stopped = gripper.follow(waypoints, [&] {
+    return ++ticks == result.ticks / 2 + 1 ? std::string("stop") : std::string();
+  });
+  EXPECT_FALSE(stopped.ok);
+  ASSERT_EQ(stopped.reached.rows(), 2);
+  EXPECT_LT((stopped.reached - waypoints.topRows(2)).cwiseAbs().maxCoeff(), 1e-12);
+}
+
 TEST(KinematicGripper, PushesAnObjectAlongAndStopsOnAFailure) {
   BulletWorld world(PhysicsParams{});
   SceneBodySpec table;
@@ -62,6 +85,7 @@ TEST(KinematicGripper, PushesAnObjectAlongAndStopsOnAFailure) {
   const TrackingResult failed = gripper.follow(bad, nullptr);
   EXPECT_FALSE(failed.ok);
   EXPECT_NE(failed.failure.find("not finite"), std::string::npos);
+  EXPECT_EQ(failed.reached.rows(), 0);
   int calls = 0;
   const TrackingResult stopped =
       gripper.follow(push, [&] { return ++calls == 3 ? std::string("stop") : std::string(); });

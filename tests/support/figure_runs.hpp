@@ -43,16 +43,32 @@ inline RunSummary run_of(int64_t id, const std::string& experiment,
   return run;
 }
 
+// What write_trajectories writes of the executed path.
+enum class ExecutedColumns {
+  none,    // no executed_ columns, as files written before executions were recorded
+  empty,   // the columns, every field empty (a task that records no execution)
+  values,  // 3 mm beside the generated path in y; trial 1's last post step not executed
+};
+
 // A corridor run directory: trajectories.csv with trials 0 (push), 1 (pull)
 // and 2 (push), segments pre, cor and post of 4 steps each.
-inline void write_trajectories(const TempDir& dir, const std::string& run) {
-  std::string csv = "trial,segment,step,x,y,z,expert_x,expert_y,expert_z\n";
+inline void write_trajectories(const TempDir& dir, const std::string& run,
+                               ExecutedColumns executed = ExecutedColumns::none) {
+  std::string csv = "trial,segment,step,x,y,z,expert_x,expert_y,expert_z";
+  csv += executed == ExecutedColumns::none ? "\n" : ",executed_x,executed_y,executed_z\n";
   for (int trial = 0; trial < 3; ++trial) {
-    for (const char* segment : {"cor", "post", "pre"}) {  // as the evaluation writes them
+    for (const std::string segment : {"cor", "post", "pre"}) {  // as the evaluation writes them
       for (int step = 0; step < 4; ++step) {
         const double x = 0.4 + 0.01 * step, y = -0.1 + 0.02 * step + 0.01 * trial;
-        csv += fmt::format("{},{},{},{},{},0.03,{},{},0.03\n", trial, segment, step, x, y,
-                           x + 0.002, y - 0.001);
+        csv += fmt::format("{},{},{},{},{},0.03,{},{},0.03", trial, segment, step, x, y, x + 0.002,
+                           y - 0.001);
+        const bool reached = !(trial == 1 && segment == "post" && step == 3);
+        if (executed == ExecutedColumns::values && reached) {
+          csv += fmt::format(",{},{},0.03", x, y + 0.003);
+        } else if (executed != ExecutedColumns::none) {
+          csv += ",,,";
+        }
+        csv += "\n";
       }
     }
   }

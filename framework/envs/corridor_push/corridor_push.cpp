@@ -131,6 +131,7 @@ void CorridorPush::reset(const Scenario& scenario) {
   wall_right_ = world_->find("corridor_right");
   touched_corridor_ = false;
   failure_.clear();
+  executed_.resize(0, 3);
   if (params_.robot.on_arms()) {
     // A fresh robot every reset, as the world is, so every trial replays alike; its base
     // moved by the scenario's offset (the scene stays where it is in the world).
@@ -166,6 +167,7 @@ Eigen::RowVectorXd CorridorPush::effector_position() const {
 }
 
 std::string CorridorPush::execute(const std::string&, const Eigen::MatrixXd& trajectory) {
+  executed_.resize(0, 3);
   if (!failure_.empty()) return failure_;
   const TrackingResult result = gripper_->follow(trajectory, [&] {
     if (world_->touching(object_, wall_left_) || world_->touching(object_, wall_right_)) {
@@ -173,6 +175,7 @@ std::string CorridorPush::execute(const std::string&, const Eigen::MatrixXd& tra
     }
     return std::string();
   });
+  executed_ = result.reached;
   if (!result.ok) {
     failure_ = result.failure;
     return failure_;

@@ -33,6 +33,9 @@ class CorridorPush : public Environment {
   std::vector<SegmentInfo> segments() const override;
   Eigen::RowVectorXd effector_position() const override;
   std::string execute(const std::string& segment, const Eigen::MatrixXd& trajectory) override;
+  // The tool position when the command reached each row: the floating
+  // gripper's is the command's; the arm's is where its tool frame was.
+  Eigen::MatrixXd executed_path() const override { return executed_; }
   Observation observe(bool with_image) override;
   cv::Size camera_size() const override { return {params_.camera.width, params_.camera.height}; }
   std::vector<std::string> state_names() const override;
@@ -68,6 +71,7 @@ class CorridorPush : public Environment {
   int object_ = -1, wall_left_ = -1, wall_right_ = -1;
   bool touched_corridor_ = false;
   std::string failure_;
+  Eigen::MatrixXd executed_;  // of the last execute()
   std::unique_ptr<HeadCamera> camera_;
 };
 

@@ -86,6 +86,7 @@ Scenario RopeKnot::sample_scenario(Rng& rng) const { return scene_.sample(rng); 
 
 void RopeKnot::reset(const Scenario& scenario) {
   fault_.clear();
+  executed_.resize(0, 8);
   critical_offset_.reset();
   scene_.reset(scenario);
   fault_ = scene_.arm_failure();  // the arms could not reach the start
@@ -107,6 +108,7 @@ bool RopeKnot::is_relative(const std::string& segment) const {
 }
 
 std::string RopeKnot::execute(const std::string& segment, const Eigen::MatrixXd& trajectory) {
+  executed_.resize(0, 8);
   if (!fault_.empty()) return fault_;
   if (trajectory.cols() != 8 || trajectory.rows() < 1 || !trajectory.allFinite()) {
     fault_ = fmt::format("{}: the '{}' trajectory is not a finite {}x8 matrix", kInvalidTrajectory,
@@ -114,11 +116,16 @@ std::string RopeKnot::execute(const std::string& segment, const Eigen::MatrixXd&
     return fault_;
   }
   Eigen::MatrixXd rows = trajectory;
-  if (is_relative(segment)) {
-    const Eigen::RowVectorXd origin = row_of(scene_);
+  const bool relative = is_relative(segment);
+  const Eigen::RowVectorXd origin = row_of(scene_);
+  if (relative) {
     for (int c : report().relative_columns) rows.col(c).array() += origin(c);
   }
   const std::string fault = scene_.execute(rows);
+  executed_ = scene_.executed();
+  if (relative) {
+    for (int c : report().relative_columns) executed_.col(c).array() -= origin(c);
+  }
   if (segment == "pre" && fault.empty()) critical_offset_ = scene_.end_offset();
   if (!fault.empty()) {
     // An arm failure is its own category; anything else stopping the rope is physics.

@@ -62,6 +62,10 @@ class RopeKnot : public Environment {
   std::vector<SegmentInfo> segments() const override;
   Eigen::RowVectorXd effector_position() const override;
   std::string execute(const std::string& segment, const Eigen::MatrixXd& trajectory) override;
+  // Where the grippers were, with the hand's drift and the tracking noise
+  // (RopeKnotScene::executed): offsets from the segment's start as its rows
+  // are for a relative segment.
+  Eigen::MatrixXd executed_path() const override { return executed_; }
   Observation observe(bool with_image) override;
   cv::Size camera_size() const override { return {params_.camera.width, params_.camera.height}; }
   std::vector<std::string> state_names() const override;
@@ -85,6 +89,7 @@ class RopeKnot : public Environment {
   RopeKnotScene scene_;
   std::unique_ptr<HeadCamera> camera_;
   std::string fault_;
+  Eigen::MatrixXd executed_;  // of the last execute()
   // The true rope-end offset from the left gripper after pre-MP.
   std::optional<Eigen::Vector3d> critical_offset_;
   // The wall time of the arms' IK solves, shared with the clones.

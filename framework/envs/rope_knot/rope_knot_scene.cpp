@@ -167,6 +167,7 @@ void RopeKnotScene::reset(const Scenario& scenario) {
   arms_.reset();
   fault_.clear();
   arm_failure_.clear();
+  executed_.resize(0, 8);
   world_ = std::make_unique<SoftWorld>(params_.world);
   const Eigen::Vector3d bar = bar_centre();
   world_->add_bar("bar", bar, params_.bar_radius, params_.bar_length, params_.bar_friction);
@@ -354,6 +355,8 @@ std::string RopeKnotScene::execute(const Eigen::MatrixXd& rows) {
   }
   if (!rows.allFinite()) throw std::invalid_argument("RopeKnotScene::execute: non-finite row");
   const double reach = params_.gripper.max_speed * world_->time_step();
+  executed_.resize(rows.rows(), 8);
+  Eigen::Index reached = 0;
   for (Eigen::Index k = 0; k < rows.rows() && fault_.empty(); ++k) {
     const Eigen::Vector3d left_target = rows.row(k).segment<3>(0).transpose() + left_drift();
     Eigen::Vector3d right_target = rows.row(k).segment<3>(4).transpose();
@@ -369,7 +372,13 @@ std::string RopeKnotScene::execute(const Eigen::MatrixXd& rows) {
            right_point() + (dr.norm() > reach ? (dr * (reach / dr.norm())).eval() : dr));
     }
     if (fault_.empty()) set_grips(rows(k, 3) >= 0.5, rows(k, 7) >= 0.5);
+    if (fault_.empty()) {
+      const Eigen::Vector3d left = left_position(), right = right_position();
+      executed_.row(reached++) << left.x(), left.y(), left.z(), left_closed() ? 1.0 : 0.0,
+          right.x(), right.y(), right.z(), right_closed() ? 1.0 : 0.0;
+    }
   }
+  executed_.conservativeResize(reached, 8);
   if (fault_.empty()) fault_ = world_->blow_up();
   return fault_;
 }

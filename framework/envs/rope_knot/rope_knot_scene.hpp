@@ -69,6 +69,10 @@ class RopeKnotScene {
 
   // Follows the rows; "" or the physics fault or arm failure that stopped it.
   std::string execute(const Eigen::MatrixXd& rows);
+  // Per row of the last execute() the grippers reached (and then gripped as
+  // it said): [left_position, left_closed, right_position, right_closed],
+  // closed 1, open 0; rows stop where a fault stopped the execution.
+  const Eigen::MatrixXd& executed() const { return executed_; }
   // The arm failure that stopped the execution ("<category>: <detail>"), "" if none.
   const std::string& arm_failure() const { return arm_failure_; }
   const DualArm* arms() const { return arms_.get(); }
@@ -131,10 +135,11 @@ class RopeKnotScene {
   // Nodes anchored at the left gripper's last close after it let go of the
   // standing part (-1: no such close yet); the pre-MP grab does not count.
   int enclosed_ = -1;
-  bool near_miss_ = false;   // at that close
-  bool drifting_ = false;    // the left gripper has opened once
-  std::string fault_;        // what stopped the execution
-  std::string arm_failure_;  // when it was the arms
+  bool near_miss_ = false;    // at that close
+  bool drifting_ = false;     // the left gripper has opened once
+  std::string fault_;         // what stopped the execution
+  std::string arm_failure_;   // when it was the arms
+  Eigen::MatrixXd executed_;  // see executed()
 };
 
 }  // namespace corrmp

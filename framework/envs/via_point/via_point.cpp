@@ -53,6 +53,7 @@ void ViaPoint::reset(const Scenario& scenario) {
   effector_ = Eigen::Vector2d::Zero();
   closest_to_via_ = (effector_ - via_point()).norm();
   failure_.clear();
+  executed_.resize(0, 2);
 }
 
 std::vector<SegmentInfo> ViaPoint::segments() const {
@@ -62,6 +63,7 @@ std::vector<SegmentInfo> ViaPoint::segments() const {
 Eigen::RowVectorXd ViaPoint::effector_position() const { return effector_.transpose(); }
 
 std::string ViaPoint::execute(const std::string&, const Eigen::MatrixXd& trajectory) {
+  executed_.resize(0, 2);
   if (!failure_.empty()) return failure_;
   if (trajectory.cols() != 2 || !trajectory.allFinite()) {
     failure_ = fmt::format("invalid trajectory: {} columns, {}", trajectory.cols(),
@@ -73,6 +75,7 @@ std::string ViaPoint::execute(const std::string&, const Eigen::MatrixXd& traject
   walked << effector_.transpose(), trajectory;
   closest_to_via_ = std::min(closest_to_via_, closest_distance(walked, via_point()));
   effector_ = trajectory.row(trajectory.rows() - 1).transpose();
+  executed_ = trajectory;
   return "";
 }
 

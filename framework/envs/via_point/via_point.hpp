@@ -30,6 +30,8 @@ class ViaPoint : public Environment {
   std::vector<SegmentInfo> segments() const override;
   Eigen::RowVectorXd effector_position() const override;
   std::string execute(const std::string& segment, const Eigen::MatrixXd& trajectory) override;
+  // The effector walks the trajectory exactly: the rows executed are the rows given.
+  Eigen::MatrixXd executed_path() const override { return executed_; }
   Observation observe(bool with_image) override;
   std::vector<std::string> state_names() const override;
   Outcome outcome() const override;
@@ -50,6 +52,7 @@ class ViaPoint : public Environment {
   Eigen::Vector2d effector_ = Eigen::Vector2d::Zero();
   double closest_to_via_ = 0.0;  // over the path executed since the reset
   std::string failure_;
+  Eigen::MatrixXd executed_;  // of the last execute()
 };
 
 }  // namespace corrmp

@@ -70,16 +70,19 @@ void ArmGripper::place_bodies() {
 
 TrackingResult ArmGripper::follow(const Eigen::MatrixXd& waypoints,
                                   const std::function<std::string()>& check) {
-  return step_through_waypoints(waypoints, params_.max_speed * world_.time_step(), commanded_, [&] {
-    std::string failure =
-        arm_ == Arm::left ? robot_.track(commanded_, hold_) : robot_.track(hold_, commanded_);
-    if (!failure.empty()) return failure;
-    place_bodies();
-    world_.step();
-    failure = world_.blow_up();
-    if (failure.empty() && check) failure = check();
-    return failure;
-  });
+  return step_through_waypoints(
+      waypoints, params_.max_speed * world_.time_step(), commanded_,
+      [&] {
+        std::string failure =
+            arm_ == Arm::left ? robot_.track(commanded_, hold_) : robot_.track(hold_, commanded_);
+        if (!failure.empty()) return failure;
+        place_bodies();
+        world_.step();
+        failure = world_.blow_up();
+        if (failure.empty() && check) failure = check();
+        return failure;
+      },
+      [&] { return position(); });
 }
 
 }  // namespace corrmp

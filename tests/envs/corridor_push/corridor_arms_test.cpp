@@ -66,6 +66,22 @@ TEST(CorridorOnArms, ATrialReplaysBitIdentically) {
   EXPECT_GT(first.second.y(), -0.2 + 0.01);  // the arm pushed the object
 }
 
+TEST(CorridorOnArms, TheExecutedPathIsTheToolsWhichLagsTheCommandByMillimetres) {
+  CorridorPush env{on_arms()};
+  env.reset(kPush);
+  const Eigen::MatrixXd path = sample_path(
+      {{0.45, -0.285, 0.07}, {0.45, -0.285, 0.03}, {0.45, -0.15, 0.03}}, 30, {1.0, 1.0});
+  ASSERT_EQ(env.execute("pre", path), "");
+  const Eigen::MatrixXd executed = env.executed_path();
+  ASSERT_EQ(executed.rows(), path.rows());
+  const Eigen::VectorXd gaps = (executed - path).rowwise().norm();
+  // Within the IK tolerance and the controller's lag (as at the expert's end
+  // above), but not exactly on the command as a floating gripper is.
+  EXPECT_LT(gaps.maxCoeff(), 0.003);
+  EXPECT_GT(gaps.maxCoeff(), 0.0);
+  EXPECT_EQ(Eigen::RowVectorXd(executed.bottomRows(1)), env.effector_position());
+}
+
 TEST(CorridorOnArms, ACorridorOutOfTheArmsReachFailsAsOutOfReach) {
   CorridorPushParams params = on_arms();
   params.robot.dual_arm.base_position = {-1.5, 0.0, 0.0};
@@ -73,6 +89,7 @@ TEST(CorridorOnArms, ACorridorOutOfTheArmsReachFailsAsOutOfReach) {
   env.reset(kPush);
   const Eigen::MatrixXd path = sample_path({{0.45, -0.285, 0.07}, {0.45, -0.2, 0.07}}, 10, {1.0});
   EXPECT_EQ(env.execute("pre", path), "out of reach");
+  EXPECT_EQ(env.executed_path().rows(), 0);  // no row reached
   EXPECT_EQ(env.outcome().failure, "out of reach");
   EXPECT_FALSE(env.outcome().success);
 }

@@ -1,10 +1,11 @@
 // Tests of the rope-knotting task on the dual-arm torso
 // (configs/common/rope_arms.yaml): the arms carry the grippers along the
 // nominal pre-MP where the floating grippers go, with the grippers'
-// orientations; a bar out of reach and a base moved away fail "out of reach";
-// the start of a trial replays bit for bit; the arms are drawn for the head camera in
-// colours the rope-end segmentation does not take; the base offset is drawn
-// after the other scenario keys; trials keep the robot's figures for the run's metrics.
+// orientations, their executed path the tools' within millimetres of the command; a bar out of
+// reach and a base moved away fail "out of reach"; the start of a trial replays bit for bit; the
+// arms are drawn for the head camera in colours the rope-end segmentation does not take; the base
+// offset is drawn after the other scenario keys; trials keep the robot's figures for the run's
+// metrics.
 #include <gmock/gmock.h>
 #include <gtest/gtest.h>
 
@@ -31,13 +32,26 @@ RopeKnotParams on_arms() {
   return params;
 }
 
-double largest_gap(RopeKnotScene& floating, RopeKnotScene& arms, const Eigen::MatrixXd& rows) {
+// The largest gap between the floating and the arms' grippers over the rows, each
+// executed alone; `command_gap` is the arms' largest gap between their executed path and
+// the rows.
+double largest_gap(RopeKnotScene& floating, RopeKnotScene& arms, const Eigen::MatrixXd& rows,
+                   double& command_gap) {
   double gap = 0.0;
+  command_gap = 0.0;
   for (Eigen::Index k = 0; k < rows.rows(); ++k) {
     EXPECT_EQ(floating.execute(rows.middleRows(k, 1)), "");
     EXPECT_EQ(arms.execute(rows.middleRows(k, 1)), "") << "row " << k;
     gap = std::max({gap, (floating.left_position() - arms.left_position()).norm(),
                     (floating.right_position() - arms.right_position()).norm()});
+    // The executed row is where the tools were.
+    EXPECT_EQ(arms.executed().rows(), 1);
+    if (arms.executed().rows() != 1) continue;
+    const Eigen::RowVectorXd executed = arms.executed().row(0);
+    EXPECT_EQ(Eigen::Vector3d(executed.segment<3>(0)), arms.left_position());
+    EXPECT_EQ(Eigen::Vector3d(executed.segment<3>(4)), arms.right_position());
+    command_gap = std::max({command_gap, (executed - rows.row(k)).segment<3>(0).norm(),
+                            (executed - rows.row(k)).segment<3>(4).norm()});
   }
   return gap;
 }
@@ -48,8 +62,12 @@ TEST(RopeKnotOnArms, TheNominalPreMpPutsTheGrippersWhereFloatingOnesGo) {
   ASSERT_NE(arms.arms(), nullptr);
   EXPECT_LT((floating.left_position() - arms.left_position()).norm(), 0.002);
   EXPECT_LT((floating.right_position() - arms.right_position()).norm(), 0.002);
-  const double gap = largest_gap(floating, arms, pre_waypoints(arms.params()));
+  double command_gap = 0.0;
+  const double gap = largest_gap(floating, arms, pre_waypoints(arms.params()), command_gap);
   EXPECT_LT(gap, 0.005);
+  // The executed path lags the command by the arms' tracking error, not more.
+  EXPECT_GT(command_gap, 0.0);
+  EXPECT_LT(command_gap, 0.005);
   // The rows' commands are the floating ones'; the tools hold the grippers' orientations.
   EXPECT_LT((floating.left_command() - arms.left_command()).norm(), 1e-12);
   const Eigen::Matrix3d down = arms.arms()->tool_pose(Arm::right).linear();

@@ -1,8 +1,8 @@
 // Tests of the rope_knot environment and its expert as the framework sees
 // them: the correction labels, the expert's segments (a relative cor-MP, the
 // whole-skill recording with the critical points' spans), replaying the
-// expert through the environment, the camera's model, determinism and
-// parallel collection.
+// expert through the environment with the executed path it records, the camera's model, determinism
+// and parallel collection.
 #include "envs/rope_knot/rope_knot.hpp"
 
 #include <gtest/gtest.h>
@@ -40,6 +40,25 @@ TEST(RopeKnot, DeclaresItsColumnsAndErrorUnit) {
   EXPECT_EQ(task.error_scale, 100.0);
 }
 
+// The executed path of the last segment: a row per commanded row, in its frame, the grips
+// as commanded and each floating gripper where it was commanded but for the left hand's
+// drift (the scenario has no tracking noise).
+void expect_executed_as_commanded(const RopeKnot& env, const Eigen::MatrixXd& rows,
+                                  const std::string& segment) {
+  const Eigen::MatrixXd executed = env.executed_path();
+  ASSERT_EQ(executed.rows(), rows.rows()) << segment;
+  ASSERT_EQ(executed.cols(), 8) << segment;
+  const Eigen::Vector3d drift = env.scene().left_drift();
+  for (Eigen::Index k = 0; k < rows.rows(); ++k) {
+    EXPECT_EQ(executed(k, 3), rows(k, 3) >= 0.5 ? 1.0 : 0.0) << segment << " row " << k;
+    EXPECT_EQ(executed(k, 7), rows(k, 7) >= 0.5 ? 1.0 : 0.0) << segment << " row " << k;
+    const Eigen::Vector3d left = (executed.row(k) - rows.row(k)).segment<3>(0).transpose();
+    EXPECT_LT(std::min(left.norm(), (left - drift).norm()), 1e-9) << segment << " row " << k;
+    EXPECT_LT((executed.row(k) - rows.row(k)).segment<3>(4).norm(), 1e-9)
+        << segment << " row " << k;
+  }
+}
+
 TEST(RopeKnot, TheExpertsSegmentsReplayThroughTheEnvironment) {
   RopeKnot env{RopeKnotEnvironmentParams{}};
   RopeExpert expert{RopeExpertParams{}};
@@ -69,9 +88,12 @@ TEST(RopeKnot, TheExpertsSegmentsReplayThroughTheEnvironment) {
   // the grippers are, and ties the knot again.
   env.reset(scenario);
   EXPECT_EQ(env.execute("pre", pre.y), "");
+  expect_executed_as_commanded(env, pre.y, "pre");
   EXPECT_LT((env.segment_start("cor") - cor.y.row(0)).norm(), 1e-9);
   EXPECT_EQ(env.execute("cor", cor.y), "");
+  expect_executed_as_commanded(env, cor.y, "cor");
   EXPECT_EQ(env.execute("post", post.y), "");
+  expect_executed_as_commanded(env, post.y, "post");
   const Outcome outcome = env.outcome();
   EXPECT_TRUE(outcome.success) << outcome.failure;
   EXPECT_EQ(outcome.metrics.at("knot"), 1.0);
@@ -171,6 +193,7 @@ TEST(RopeKnot, ABrokenTrajectoryIsAFailedTrialNotACrash) {
   EXPECT_FALSE(env.outcome().success);
   EXPECT_EQ(env.outcome().failure, failure);
   EXPECT_EQ(env.execute("post", Eigen::MatrixXd::Zero(2, 8)), failure);  // stays failed
+  EXPECT_EQ(env.executed_path().rows(), 0);
 }
 
 }  // namespace

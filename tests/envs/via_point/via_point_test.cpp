@@ -60,7 +60,9 @@ TEST(ViaPoint, APathThroughTheViaPointThatStopsShortMissesTheGoal) {
   ViaPoint env{ViaPointParams{}};
   env.reset({{"via_offset", -0.01}});
   EXPECT_EQ(env.execute("pre", straight_path({0.0, 0.0}, env.critical_point(), 30)), "");
-  EXPECT_EQ(env.execute("cor", bend_path(env.critical_point(), env.after_via(), -0.01, 40)), "");
+  const Eigen::MatrixXd bend = bend_path(env.critical_point(), env.after_via(), -0.01, 40);
+  EXPECT_EQ(env.execute("cor", bend), "");
+  EXPECT_EQ(env.executed_path(), bend);  // walked exactly
   const Outcome outcome = env.outcome();
   EXPECT_FALSE(outcome.success);
   EXPECT_EQ(outcome.failure, "missed the goal by 100.0 mm");
@@ -73,6 +75,7 @@ TEST(ViaPoint, ANonFiniteTrajectoryStopsTheTrialAsAnInvalidTrajectory) {
   Eigen::MatrixXd path = straight_path({0.0, 0.0}, {0.1, 0.0}, 10);
   path(4, 1) = std::nan("");
   EXPECT_EQ(env.execute("pre", path).rfind("invalid trajectory", 0), 0u);
+  EXPECT_EQ(env.executed_path().rows(), 0);
   EXPECT_EQ(env.outcome().failure.rfind("invalid trajectory", 0), 0u);
   EXPECT_EQ(env.report().failure_categories.back(), "invalid trajectory");
 }
