@@ -37,10 +37,10 @@ TEST(Paper, NamesItsColumnsExperimentsAndFigures) {
                                 "rope_perfect", "rope_nocorrection", "rope_mono", "rope_color_arms",
                                 "rope_nocorrection_arms", "rope_mono_arms"}));
   EXPECT_EQ(reference_trials(paper.decision_tables), 25);
-  ASSERT_EQ(paper.figures.trajectory_comparisons.size(), 2u);
+  ASSERT_EQ(paper.figures.trajectory_comparisons.size(), 3u);
   EXPECT_EQ(paper.figures.trajectory_comparisons[0].view.unit, "cm");
   EXPECT_EQ(paper.figures.trajectory_comparisons[0].view.scale, 100.0);
-  ASSERT_EQ(paper.figures.copied.size(), 3u);
+  ASSERT_EQ(paper.figures.copied.size(), 4u);
   EXPECT_EQ(paper.figures.copied[1].file, "knotting.png");
   EXPECT_EQ(load_paper().title, paper.title);  // the source tree's copy by default
 }
