@@ -219,6 +219,8 @@ std::string DualArm::reach(const Eigen::Vector3d& left_target,
   return "";
 }
 
+double DualArm::time() const { return dynamics_->time(); }
+
 Eigen::Isometry3d DualArm::tool_pose(Arm arm) const {
   return dynamics_->link_pose(arms_[static_cast<int>(arm)]->tool);
 }

@@ -105,6 +105,8 @@ class DualArm {
   const std::vector<std::string>& hand_links(Arm arm) const;
 
   const std::string& failure_detail() const { return failure_detail_; }
+  // Simulated time since construction (s): one tick per track().
+  double time() const;
 
   // Inverse kinematics statistics since construction.
   struct IkStats {
