@@ -1,5 +1,7 @@
-// A robot arm simulated as a fixed-base Featherstone multibody in its own
-// Bullet world, tracking commanded joint trajectories with one velocity-limited
+// A robot simulated as fixed-base Featherstone multibodies in its own Bullet
+// world, one per branch of its root link (the arms of a fixed torso do not move
+// one another, and the constraint solver's rows cost less on the smaller
+// bodies), tracking commanded joint trajectories with one velocity-limited
 // joint motor per movable joint (the paper's robot controller tracking IK joint
 // trajectories fed at a nominal rate). Fixed time step, one internal step per
 // tick: a fresh robot replays identically.
