@@ -393,17 +393,26 @@ Eigen::VectorXd RobotDynamics::velocities() const {
   return v;
 }
 
+int RobotDynamics::link_index(const std::string& link) const {
+  for (size_t i = 0; i < model_.links.size(); ++i)
+    if (model_.links[i].name == link) return static_cast<int>(i);
+  return -1;
+}
+
 Eigen::Isometry3d RobotDynamics::link_pose(const std::string& link) const {
-  for (size_t i = 0; i < model_.links.size(); ++i) {
-    if (model_.links[i].name != link) continue;
-    const LinkPlacement& placement = layout_.links[i];
-    const btMultiBody& multibody = *bullet_->multibodies[bullet_->body_multibody[placement.body]];
-    const int body_link = bullet_->body_link[placement.body];
-    const btTransform com = body_link < 0 ? multibody.getBaseWorldTransform()
-                                          : multibody.getLink(body_link).m_cachedWorldTransform;
-    return from_bullet(com) * layout_.bodies[placement.body].com.inverse() * placement.in_body;
-  }
-  throw std::invalid_argument(fmt::format("robot '{}': no link '{}'", model_.name, link));
+  const int index = link_index(link);
+  if (index < 0)
+    throw std::invalid_argument(fmt::format("robot '{}': no link '{}'", model_.name, link));
+  return link_pose(index);
+}
+
+Eigen::Isometry3d RobotDynamics::link_pose(int link) const {
+  const LinkPlacement& placement = layout_.links.at(link);
+  const btMultiBody& multibody = *bullet_->multibodies[bullet_->body_multibody[placement.body]];
+  const int body_link = bullet_->body_link[placement.body];
+  const btTransform com = body_link < 0 ? multibody.getBaseWorldTransform()
+                                        : multibody.getLink(body_link).m_cachedWorldTransform;
+  return from_bullet(com) * layout_.bodies[placement.body].com.inverse() * placement.in_body;
 }
 
 bool RobotDynamics::fail(const std::string& category, const std::string& detail) {

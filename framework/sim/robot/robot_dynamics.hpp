@@ -109,6 +109,10 @@ class RobotDynamics {
   // The model link's frame (not its centre of mass) in the world; throws
   // std::invalid_argument for an unknown link.
   Eigen::Isometry3d link_pose(const std::string& link) const;
+  // The index of a model link (into RobotModel::links), -1 when absent, and
+  // the pose of the link with that index.
+  int link_index(const std::string& link) const;
+  Eigen::Isometry3d link_pose(int link) const;
 
   // The failure category of the last tick, "" when fine (see the top of this file).
   const std::string& check() const { return failure_; }
