@@ -47,6 +47,9 @@ TEST(RopeKnotOnArms, TheNominalPreMpPutsTheGrippersWhereFloatingOnesGo) {
   EXPECT_LT((floating.right_position() - arms.right_position()).norm(), 0.002);
   const double gap = largest_gap(floating, arms, pre_waypoints(arms.params()));
   EXPECT_LT(gap, 0.005);
+  // The joints track within a few milliradians with the config's solver iterations.
+  EXPECT_EQ(arms.params().robot.dual_arm.control.solver_iterations, 20);
+  EXPECT_LT(arms.arms()->max_tracking_error(), 0.003);
   // The rows' commands are the floating ones'; the tools hold the grippers' orientations.
   EXPECT_LT((floating.left_command() - arms.left_command()).norm(), 1e-12);
   const Eigen::Matrix3d down = arms.arms()->tool_pose(Arm::right).linear();
