@@ -61,10 +61,10 @@ ArmGripper::ArmGripper(BulletWorld& world, const GripperParams& params, DualArm&
 
 void ArmGripper::place_bodies() {
   gripper_.place(robot_.tool_position(arm_));
-  const std::vector<PlacedShape> shapes = robot_.shapes();
+  const std::vector<Eigen::Isometry3d> poses = robot_.shape_poses();
   size_t body = 0;
-  for (size_t s = 0; s < shapes.size(); ++s) {
-    if (shown_[s]) world_.set_pose(arm_bodies_[body++], shapes[s].shape.origin);
+  for (size_t s = 0; s < poses.size(); ++s) {
+    if (shown_[s]) world_.set_pose(arm_bodies_[body++], poses[s]);
   }
 }
 

@@ -6,6 +6,7 @@
 #include <algorithm>
 #include <chrono>
 #include <filesystem>
+#include <optional>
 #include <utility>
 #include <vector>
 
@@ -51,10 +52,13 @@ struct DualArm::ArmState {
       : tool(tool), kinematics(model, base, tool, ik) {}
 
   std::string tool;
+  int tool_link = -1;  // index into the model's links
   ArmKinematics kinematics;
   Eigen::VectorXd home;
   std::vector<int> joints;   // index of each arm joint in the robot's joint vector
   Eigen::VectorXd solution;  // the last IK solution: the next warm start
+  // The target (base frame) `solution` solves in track(); unset after a reset or placement.
+  std::optional<Eigen::Isometry3d> solved_target;
   Eigen::Matrix3d orientation = Eigen::Matrix3d::Identity();  // tool to world
   std::vector<std::string> links, hand;
 };
@@ -87,6 +91,7 @@ DualArm::DualArm(const DualArmParams& params, double time_step) : params_(params
   } catch (const std::invalid_argument& e) {
     throw ConfigError(fmt::format("{}: {}", params.urdf, e.what()));
   }
+  base_link_ = dynamics_->link_index(params.base_link);
   const std::string* tools[2] = {&params.left_tool, &params.right_tool};
   const std::vector<double>* homes[2] = {&params.left_home, &params.right_home};
   for (Arm arm : {Arm::left, Arm::right}) {
@@ -99,6 +104,7 @@ DualArm::DualArm(const DualArmParams& params, double time_step) : params_(params
                                     params.urdf, arm_name(arm), home.size(), arm_name(arm),
                                     kinematics.joints()));
     }
+    state->tool_link = dynamics_->link_index(*tools[a]);
     state->home = Eigen::Map<const Eigen::VectorXd>(home.data(), kinematics.joints());
     for (int j = 0; j < kinematics.joints(); ++j) {
       const std::string& joint = kinematics.joint_names()[j];
@@ -129,9 +135,10 @@ void DualArm::reset() {
     for (size_t j = 0; j < arm->joints.size(); ++j) q[arm->joints[j]] = arm->home[j];
   }
   dynamics_->reset(q);
-  const Eigen::Isometry3d base = dynamics_->link_pose(params_.base_link);
+  const Eigen::Isometry3d base = dynamics_->link_pose(base_link_);
   for (const auto& arm : arms_) {
     arm->solution = arm->home;
+    arm->solved_target.reset();
     arm->orientation = base.linear() * arm->kinematics.forward(arm->home).linear();
   }
   max_tracking_error_ = 0.0;
@@ -147,8 +154,8 @@ std::string DualArm::place_tool(Arm arm, const Eigen::Vector3d& position) {
   Eigen::Isometry3d target = Eigen::Isometry3d::Identity();
   target.linear() = state.orientation;
   target.translation() = position;
-  const IkResult result = state.kinematics.solve(
-      dynamics_->link_pose(params_.base_link).inverse() * target, state.solution);
+  const IkResult result =
+      state.kinematics.solve(dynamics_->link_pose(base_link_).inverse() * target, state.solution);
   if (result.status != IkResult::Status::ok) {
     failure_detail_ = fmt::format(
         "{} arm: no joint positions for the tool at ({:.3f}, {:.3f}, "
@@ -160,6 +167,7 @@ std::string DualArm::place_tool(Arm arm, const Eigen::Vector3d& position) {
   for (size_t j = 0; j < state.joints.size(); ++j) q[state.joints[j]] = result.q[j];
   dynamics_->reset(q);
   state.solution = result.q;
+  state.solved_target.reset();
   failure_detail_.clear();
   return "";
 }
@@ -167,20 +175,26 @@ std::string DualArm::place_tool(Arm arm, const Eigen::Vector3d& position) {
 std::string DualArm::track(const Eigen::Vector3d& left_target,
                            const Eigen::Vector3d& right_target) {
   failure_detail_.clear();
-  const Eigen::Isometry3d base_inverse = dynamics_->link_pose(params_.base_link).inverse();
+  const Eigen::Isometry3d base_inverse = dynamics_->link_pose(base_link_).inverse();
   Eigen::VectorXd q = dynamics_->targets();
   for (Arm arm : {Arm::left, Arm::right}) {
     ArmState& state = *arms_[static_cast<int>(arm)];
     Eigen::Isometry3d target = Eigen::Isometry3d::Identity();
     target.linear() = state.orientation;
     target.translation() = arm == Arm::left ? left_target : right_target;
+    const Eigen::Isometry3d in_base = base_inverse * target;
+    ++ik_stats_.solves;
+    if (state.solved_target && state.solved_target->matrix() == in_base.matrix()) {
+      ++ik_stats_.reused;
+      for (size_t j = 0; j < state.joints.size(); ++j) q[state.joints[j]] = state.solution[j];
+      continue;
+    }
     const auto started = std::chrono::steady_clock::now();
-    const IkResult result = state.kinematics.solve(base_inverse * target, state.solution);
+    const IkResult result = state.kinematics.solve(in_base, state.solution);
     const double seconds =
         std::chrono::duration<double>(std::chrono::steady_clock::now() - started).count();
     ik_stats_.seconds += seconds;
     if (solve_times_) solve_times_->add(seconds);
-    ++ik_stats_.solves;
     if (result.status != IkResult::Status::ok) {
       ++ik_stats_.failures;
       const Eigen::Vector3d& p = target.translation();
@@ -192,6 +206,7 @@ std::string DualArm::track(const Eigen::Vector3d& left_target,
       return category_of(result.status);
     }
     state.solution = result.q;
+    state.solved_target = in_base;
     for (size_t j = 0; j < state.joints.size(); ++j) q[state.joints[j]] = result.q[j];
   }
   dynamics_->set_targets(q);
@@ -204,7 +219,7 @@ std::string DualArm::track(const Eigen::Vector3d& left_target,
 
 std::string DualArm::reach(const Eigen::Vector3d& left_target,
                            const Eigen::Vector3d& right_target) const {
-  const Eigen::Isometry3d base_inverse = dynamics_->link_pose(params_.base_link).inverse();
+  const Eigen::Isometry3d base_inverse = dynamics_->link_pose(base_link_).inverse();
   for (Arm arm : {Arm::left, Arm::right}) {
     const ArmState& state = *arms_[static_cast<int>(arm)];
     Eigen::Isometry3d target = Eigen::Isometry3d::Identity();
@@ -221,8 +236,10 @@ std::string DualArm::reach(const Eigen::Vector3d& left_target,
   return "";
 }
 
+double DualArm::time() const { return dynamics_->time(); }
+
 Eigen::Isometry3d DualArm::tool_pose(Arm arm) const {
-  return dynamics_->link_pose(arms_[static_cast<int>(arm)]->tool);
+  return dynamics_->link_pose(arms_[static_cast<int>(arm)]->tool_link);
 }
 
 const std::vector<std::string>& DualArm::arm_links(Arm arm) const {
@@ -235,9 +252,10 @@ const std::vector<std::string>& DualArm::hand_links(Arm arm) const {
 
 std::vector<PlacedShape> DualArm::shapes() const {
   std::vector<PlacedShape> placed;
-  for (const RobotLink& link : model_.links) {
+  for (size_t i = 0; i < model_.links.size(); ++i) {
+    const RobotLink& link = model_.links[i];
     if (link.collisions.empty()) continue;
-    const Eigen::Isometry3d pose = dynamics_->link_pose(link.name);
+    const Eigen::Isometry3d pose = dynamics_->link_pose(static_cast<int>(i));
     for (const RobotShape& shape : link.collisions) {
       PlacedShape p{link.name, shape};
       p.shape.origin = pose * shape.origin;
@@ -245,6 +263,17 @@ std::vector<PlacedShape> DualArm::shapes() const {
     }
   }
   return placed;
+}
+
+std::vector<Eigen::Isometry3d> DualArm::shape_poses() const {
+  std::vector<Eigen::Isometry3d> poses;
+  for (size_t i = 0; i < model_.links.size(); ++i) {
+    const RobotLink& link = model_.links[i];
+    if (link.collisions.empty()) continue;
+    const Eigen::Isometry3d pose = dynamics_->link_pose(static_cast<int>(i));
+    for (const RobotShape& shape : link.collisions) poses.push_back(pose * shape.origin);
+  }
+  return poses;
 }
 
 }  // namespace corrmp

@@ -100,6 +100,8 @@ class DualArm {
   Eigen::Vector3d tool_position(Arm arm) const { return tool_pose(arm).translation(); }
   // Every collision shape of the robot at its executed pose (world frame).
   std::vector<PlacedShape> shapes() const;
+  // Only the world poses of shapes(), in its order.
+  std::vector<Eigen::Isometry3d> shape_poses() const;
   // The links an arm's joints move (its links, hand and tool frame), and of
   // those the hand: the links fixed below its last joint (gripper, fingers,
   // tool frame), whose shapes a task leaves out where its own gripper stands in.
@@ -107,10 +109,16 @@ class DualArm {
   const std::vector<std::string>& hand_links(Arm arm) const;
 
   const std::string& failure_detail() const { return failure_detail_; }
+  // Simulated time since construction (s): one tick per track().
+  double time() const;
 
-  // Inverse kinematics statistics since construction.
+  // Inverse kinematics statistics of track() since construction.
   struct IkStats {
-    long solves = 0;
+    long solves = 0;  // tool targets mapped to joint positions (per arm and tick)
+    // Of those, answered by the arm's last solution: its target had not moved
+    // (the same tool pose in the base frame, bit for bit, as at the arm's last
+    // solve in track()), so the joint targets stay.
+    long reused = 0;
     long failures = 0;
     double seconds = 0.0;  // wall time in solve(); not deterministic, for reports only
   };
@@ -127,6 +135,7 @@ class DualArm {
   RobotModel model_;
   std::unique_ptr<RobotDynamics> dynamics_;
   std::array<std::unique_ptr<ArmState>, 2> arms_;
+  int base_link_ = -1;  // index into the model's links
   IkStats ik_stats_;
   std::shared_ptr<IkSolveTimes> solve_times_;
   double max_tracking_error_ = 0.0;

@@ -61,19 +61,24 @@ std::unique_ptr<btCollisionShape> make_shape(const RobotShape& shape) {
   return made;
 }
 
-// A link collider that also never collides with the listed links of its own
-// robot (Bullet's own filter only knows parent/child pairs).
+// The collider of one layout body. Two bodies of the robot collide unless one
+// is the other's parent (joined by a joint) or the pair is allowed; the robot
+// may span several multibodies, so Bullet's own filter (one multibody's
+// parent/child pairs) is not used. Only the robot's colliders are in its world.
 class RobotLinkCollider : public btMultiBodyLinkCollider {
  public:
-  using btMultiBodyLinkCollider::btMultiBodyLinkCollider;
-  std::vector<int> allowed;  // multibody link indices, -1 for the base
+  RobotLinkCollider(btMultiBody* multibody, int link, int body, int parent)
+      : btMultiBodyLinkCollider(multibody, link), body(body), parent(parent) {}
+  int body;                  // layout body index
+  int parent;                // its parent body, -1 for the root
+  std::vector<int> allowed;  // layout body indices
 
   bool checkCollideWithOverride(const btCollisionObject* object) const override {
-    const btMultiBodyLinkCollider* other = btMultiBodyLinkCollider::upcast(object);
-    if (other && other->m_multiBody == m_multiBody &&
-        std::find(allowed.begin(), allowed.end(), other->m_link) != allowed.end())
-      return false;
-    return btMultiBodyLinkCollider::checkCollideWithOverride(object);
+    const btMultiBodyLinkCollider* link = btMultiBodyLinkCollider::upcast(object);
+    if (!link) return true;
+    const auto* other = static_cast<const RobotLinkCollider*>(link);
+    if (other->body == parent || other->parent == body) return false;
+    return std::find(allowed.begin(), allowed.end(), other->body) == allowed.end();
   }
 };
 
@@ -99,7 +104,12 @@ struct RobotDynamics::Bullet {
   btDbvtBroadphase broadphase;
   btMultiBodyConstraintSolver solver;
   btMultiBodyDynamicsWorld world{&dispatcher, &broadphase, &solver, &configuration};
-  std::unique_ptr<btMultiBody> multibody;
+  // One fixed-base multibody per branch of the root (the root's movable
+  // children and everything below each): branches of a fixed root do not
+  // move one another, and the solver's rows of a smaller multibody cost less.
+  std::vector<std::unique_ptr<btMultiBody>> multibodies;
+  std::vector<int> body_multibody;  // per layout body: index into multibodies
+  std::vector<int> body_link;       // per layout body: its link there, -1 for the root
   std::vector<std::unique_ptr<btCollisionShape>> shapes;
   std::vector<std::unique_ptr<RobotLinkCollider>> colliders;  // per body; null without shapes
   std::vector<std::unique_ptr<btMultiBodyJointMotor>> motors;
@@ -112,7 +122,7 @@ struct RobotDynamics::Bullet {
     for (auto& motor : motors) world.removeMultiBodyConstraint(motor.get());
     for (auto& collider : colliders)
       if (collider) world.removeCollisionObject(collider.get());
-    if (multibody) world.removeMultiBody(multibody.get());
+    for (auto& multibody : multibodies) world.removeMultiBody(multibody.get());
   }
 };
 
@@ -136,12 +146,36 @@ RobotDynamics::RobotDynamics(
 RobotDynamics::~RobotDynamics() = default;
 
 void RobotDynamics::build_multibody(const Eigen::Isometry3d& base_pose) {
+  const int count = static_cast<int>(layout_.bodies.size());
+  std::vector<int>& branch = bullet_->body_multibody;
+  std::vector<int>& link_of = bullet_->body_link;
+  branch.assign(count, 0);
+  link_of.assign(count, -1);
+  std::vector<int> links;  // per branch
+  for (int b = 1; b < count; ++b) {
+    const int parent = layout_.bodies[b].parent;
+    if (parent == 0) {
+      branch[b] = static_cast<int>(links.size());
+      links.push_back(0);
+    } else {
+      branch[b] = branch[parent];
+    }
+    link_of[b] = links[branch[b]]++;
+  }
+  if (links.empty()) links.push_back(0);
   const LayoutBody& root = layout_.bodies[0];
-  auto multibody = std::make_unique<btMultiBody>(
-      dof(), root.mass, to_vector(root.principal_inertia), /*fixedBase=*/true, /*canSleep=*/false);
-  multibody->setBaseWorldTransform(to_bullet(base_pose * root.com));
-  for (int link = 0; link < dof(); ++link) {
-    const LayoutBody& body = layout_.bodies[link + 1];
+  for (int links_here : links) {
+    auto multibody =
+        std::make_unique<btMultiBody>(links_here, root.mass, to_vector(root.principal_inertia),
+                                      /*fixedBase=*/true, /*canSleep=*/false);
+    multibody->setBaseWorldTransform(to_bullet(base_pose * root.com));
+    bullet_->multibodies.push_back(std::move(multibody));
+  }
+  for (int b = 1; b < count; ++b) {
+    const LayoutBody& body = layout_.bodies[b];
+    btMultiBody* multibody = bullet_->multibodies[branch[b]].get();
+    const int link = link_of[b];
+    const int parent_link = link_of[body.parent];
     const Eigen::Isometry3d& parent_com = layout_.bodies[body.parent].com;
     // Bullet's link frames are the centre-of-mass frames: rotations and
     // offsets between them, with the pivot on the joint axis.
@@ -154,23 +188,23 @@ void RobotDynamics::build_multibody(const Eigen::Isometry3d& base_pose) {
     const btVector3 to_com = to_vector(body.com.linear().transpose() * body.com.translation());
     const btVector3 inertia = to_vector(body.principal_inertia);
     if (model_.joints[body.joint].type == JointType::revolute) {
-      multibody->setupRevolute(link, body.mass, inertia, body.parent - 1, rotation, axis, pivot,
-                               to_com, /*disableParentCollision=*/true);
+      multibody->setupRevolute(link, body.mass, inertia, parent_link, rotation, axis, pivot, to_com,
+                               /*disableParentCollision=*/true);
     } else {
-      multibody->setupPrismatic(link, body.mass, inertia, body.parent - 1, rotation, axis, pivot,
+      multibody->setupPrismatic(link, body.mass, inertia, parent_link, rotation, axis, pivot,
                                 to_com, /*disableParentCollision=*/true);
     }
   }
-  multibody->finalizeMultiDof();
-  multibody->setHasSelfCollision(true);
-  multibody->setLinearDamping(0);
-  multibody->setAngularDamping(0);
-  bullet_->world.addMultiBody(multibody.get());
-  bullet_->multibody = std::move(multibody);
+  for (auto& multibody : bullet_->multibodies) {
+    multibody->finalizeMultiDof();
+    multibody->setHasSelfCollision(true);
+    multibody->setLinearDamping(0);
+    multibody->setAngularDamping(0);
+    bullet_->world.addMultiBody(multibody.get());
+  }
 }
 
 void RobotDynamics::build_colliders() {
-  btMultiBody& multibody = *bullet_->multibody;
   for (size_t b = 0; b < layout_.bodies.size(); ++b) {
     const LayoutBody& body = layout_.bodies[b];
     if (body.collisions.empty()) {
@@ -184,8 +218,10 @@ void RobotDynamics::build_colliders() {
                               bullet_->shapes.back().get());
     }
     compound->setMargin(kCollisionMargin);
-    const int link = static_cast<int>(b) - 1;
-    auto collider = std::make_unique<RobotLinkCollider>(&multibody, link);
+    btMultiBody& multibody = *bullet_->multibodies[bullet_->body_multibody[b]];
+    const int link = bullet_->body_link[b];
+    auto collider =
+        std::make_unique<RobotLinkCollider>(&multibody, link, static_cast<int>(b), body.parent);
     collider->setCollisionShape(compound.get());
     bullet_->shapes.push_back(std::move(compound));
     collider->setWorldTransform(link < 0 ? multibody.getBaseWorldTransform()
@@ -201,15 +237,17 @@ void RobotDynamics::build_colliders() {
 }
 
 void RobotDynamics::build_motors() {
-  for (int link = 0; link < dof(); ++link) {
-    const RobotJoint& joint = model_.joints[layout_.movable_joints[link]];
-    auto motor = std::make_unique<btMultiBodyJointMotor>(bullet_->multibody.get(), link, 0.0,
+  for (int i = 0; i < dof(); ++i) {
+    const RobotJoint& joint = model_.joints[layout_.movable_joints[i]];
+    btMultiBody* multibody = bullet_->multibodies[bullet_->body_multibody[i + 1]].get();
+    const int link = bullet_->body_link[i + 1];
+    auto motor = std::make_unique<btMultiBodyJointMotor>(multibody, link, 0.0,
                                                          joint.effort * params_.time_step);
     motor->setRhsClamp(joint.velocity);
     bullet_->world.addMultiBodyConstraint(motor.get());
     bullet_->motors.push_back(std::move(motor));
-    auto limit = std::make_unique<btMultiBodyJointLimitConstraint>(bullet_->multibody.get(), link,
-                                                                   joint.lower, joint.upper);
+    auto limit = std::make_unique<btMultiBodyJointLimitConstraint>(multibody, link, joint.lower,
+                                                                   joint.upper);
     bullet_->world.addMultiBodyConstraint(limit.get());
     bullet_->limits.push_back(std::move(limit));
   }
@@ -227,8 +265,8 @@ void RobotDynamics::allow_contacts_at_zero(
   };
   auto allow = [&](int a, int b) {
     if (a == b || !bullet_->colliders[a] || !bullet_->colliders[b]) return;
-    bullet_->colliders[a]->allowed.push_back(b - 1);
-    bullet_->colliders[b]->allowed.push_back(a - 1);
+    bullet_->colliders[a]->allowed.push_back(b);
+    bullet_->colliders[b]->allowed.push_back(a);
   };
   for (const auto& [a, b] : allowed) allow(body_of(a), body_of(b));
 
@@ -267,16 +305,20 @@ void RobotDynamics::reset(const Eigen::VectorXd& q) {
   if (q.size() != dof())
     throw std::invalid_argument(fmt::format(
         "robot '{}': reset with {} joint positions, expected {}", model_.name, q.size(), dof()));
-  btMultiBody& multibody = *bullet_->multibody;
   for (int i = 0; i < dof(); ++i) {
-    multibody.setJointPos(i, q[i]);
-    multibody.setJointVel(i, 0.0);
+    btMultiBody& multibody = *bullet_->multibodies[bullet_->body_multibody[i + 1]];
+    multibody.setJointPos(bullet_->body_link[i + 1], q[i]);
+    multibody.setJointVel(bullet_->body_link[i + 1], 0.0);
   }
-  multibody.clearForcesAndTorques();
-  multibody.clearVelocities();
+  for (auto& multibody : bullet_->multibodies) {
+    multibody->clearForcesAndTorques();
+    multibody->clearVelocities();
+  }
   update_kinematics();
-  multibody.updateCollisionObjectWorldTransforms(bullet_->scratch_rotations,
-                                                 bullet_->scratch_origins);
+  for (auto& multibody : bullet_->multibodies) {
+    multibody->updateCollisionObjectWorldTransforms(bullet_->scratch_rotations,
+                                                    bullet_->scratch_origins);
+  }
   target_ = q;
   motor_target_ = q;
   target_velocity_.resize(0);
@@ -331,32 +373,46 @@ void RobotDynamics::step() {
 }
 
 void RobotDynamics::update_kinematics() {
-  bullet_->multibody->forwardKinematics(bullet_->scratch_rotations, bullet_->scratch_origins);
+  for (auto& multibody : bullet_->multibodies)
+    multibody->forwardKinematics(bullet_->scratch_rotations, bullet_->scratch_origins);
 }
 
 Eigen::VectorXd RobotDynamics::positions() const {
   Eigen::VectorXd q(dof());
-  for (int i = 0; i < dof(); ++i) q[i] = bullet_->multibody->getJointPos(i);
+  for (int i = 0; i < dof(); ++i)
+    q[i] = bullet_->multibodies[bullet_->body_multibody[i + 1]]->getJointPos(
+        bullet_->body_link[i + 1]);
   return q;
 }
 
 Eigen::VectorXd RobotDynamics::velocities() const {
   Eigen::VectorXd v(dof());
-  for (int i = 0; i < dof(); ++i) v[i] = bullet_->multibody->getJointVel(i);
+  for (int i = 0; i < dof(); ++i)
+    v[i] = bullet_->multibodies[bullet_->body_multibody[i + 1]]->getJointVel(
+        bullet_->body_link[i + 1]);
   return v;
 }
 
+int RobotDynamics::link_index(const std::string& link) const {
+  for (size_t i = 0; i < model_.links.size(); ++i)
+    if (model_.links[i].name == link) return static_cast<int>(i);
+  return -1;
+}
+
 Eigen::Isometry3d RobotDynamics::link_pose(const std::string& link) const {
-  for (size_t i = 0; i < model_.links.size(); ++i) {
-    if (model_.links[i].name != link) continue;
-    const LinkPlacement& placement = layout_.links[i];
-    const btMultiBody& multibody = *bullet_->multibody;
-    const btTransform com = placement.body == 0
-                                ? multibody.getBaseWorldTransform()
-                                : multibody.getLink(placement.body - 1).m_cachedWorldTransform;
-    return from_bullet(com) * layout_.bodies[placement.body].com.inverse() * placement.in_body;
-  }
-  throw std::invalid_argument(fmt::format("robot '{}': no link '{}'", model_.name, link));
+  const int index = link_index(link);
+  if (index < 0)
+    throw std::invalid_argument(fmt::format("robot '{}': no link '{}'", model_.name, link));
+  return link_pose(index);
+}
+
+Eigen::Isometry3d RobotDynamics::link_pose(int link) const {
+  const LinkPlacement& placement = layout_.links.at(link);
+  const btMultiBody& multibody = *bullet_->multibodies[bullet_->body_multibody[placement.body]];
+  const int body_link = bullet_->body_link[placement.body];
+  const btTransform com = body_link < 0 ? multibody.getBaseWorldTransform()
+                                        : multibody.getLink(body_link).m_cachedWorldTransform;
+  return from_bullet(com) * layout_.bodies[placement.body].com.inverse() * placement.in_body;
 }
 
 bool RobotDynamics::fail(const std::string& category, const std::string& detail) {
@@ -375,17 +431,17 @@ void RobotDynamics::run_checks() {
     return;
   }
 
-  const btMultiBody* multibody = bullet_->multibody.get();
   for (int m = 0; m < bullet_->dispatcher.getNumManifolds(); ++m) {
     const btPersistentManifold* manifold = bullet_->dispatcher.getManifoldByIndexInternal(m);
     const auto* a = btMultiBodyLinkCollider::upcast(manifold->getBody0());
     const auto* b = btMultiBodyLinkCollider::upcast(manifold->getBody1());
-    if (!a || !b || a->m_multiBody != multibody || b->m_multiBody != multibody) continue;
+    if (!a || !b) continue;
     for (int p = 0; p < manifold->getNumContacts(); ++p) {
       if (manifold->getContactPoint(p).getDistance() >= params_.contact_margin) continue;
       fail("self collision",
-           fmt::format("links '{}' and '{}' touch", layout_.bodies[a->m_link + 1].link,
-                       layout_.bodies[b->m_link + 1].link));
+           fmt::format("links '{}' and '{}' touch",
+                       layout_.bodies[static_cast<const RobotLinkCollider*>(a)->body].link,
+                       layout_.bodies[static_cast<const RobotLinkCollider*>(b)->body].link));
       return;
     }
   }

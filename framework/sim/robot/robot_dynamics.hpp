@@ -1,5 +1,7 @@
-// A robot arm simulated as a fixed-base Featherstone multibody in its own
-// Bullet world, tracking commanded joint trajectories with one velocity-limited
+// A robot simulated as fixed-base Featherstone multibodies in its own Bullet
+// world, one per branch of its root link (the arms of a fixed torso do not move
+// one another, and the constraint solver's rows cost less on the smaller
+// bodies), tracking commanded joint trajectories with one velocity-limited
 // joint motor per movable joint (the paper's robot controller tracking IK joint
 // trajectories fed at a nominal rate). Fixed time step, one internal step per
 // tick: a fresh robot replays identically.
@@ -107,6 +109,10 @@ class RobotDynamics {
   // The model link's frame (not its centre of mass) in the world; throws
   // std::invalid_argument for an unknown link.
   Eigen::Isometry3d link_pose(const std::string& link) const;
+  // The index of a model link (into RobotModel::links), -1 when absent, and
+  // the pose of the link with that index.
+  int link_index(const std::string& link) const;
+  Eigen::Isometry3d link_pose(int link) const;
 
   // The failure category of the last tick, "" when fine (see the top of this file).
   const std::string& check() const { return failure_; }

@@ -68,6 +68,9 @@ TEST(RopeKnotOnArms, TheNominalPreMpPutsTheGrippersWhereFloatingOnesGo) {
   // The executed path lags the command by the arms' tracking error, not more.
   EXPECT_GT(command_gap, 0.0);
   EXPECT_LT(command_gap, 0.005);
+  // The joints track within a few milliradians with the config's solver iterations.
+  EXPECT_EQ(arms.params().robot.dual_arm.control.solver_iterations, 20);
+  EXPECT_LT(arms.arms()->max_tracking_error(), 0.003);
   // The rows' commands are the floating ones'; the tools hold the grippers' orientations.
   EXPECT_LT((floating.left_command() - arms.left_command()).norm(), 1e-12);
   const Eigen::Matrix3d down = arms.arms()->tool_pose(Arm::right).linear();

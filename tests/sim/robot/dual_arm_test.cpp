@@ -106,6 +106,28 @@ TEST(DualArm, SameSequenceInFreshArmsIsBitIdentical) {
   EXPECT_EQ(first.second, second.second);
 }
 
+// A tool target that has not moved since the arm's last solve keeps that
+// solution as its joint targets, without solving again.
+TEST(DualArm, ATargetThatHasNotMovedKeepsItsJointTargets) {
+  DualArm arm(DualArmParams{}, kTick);
+  arm.set_tool_orientation(Arm::right, pointing_down());
+  const Eigen::Vector3d end(0.45, -0.2, 0.07);
+  const Motion moved = move_right(arm, arm.tool_position(Arm::right), end);
+  ASSERT_EQ(moved.failure, "") << arm.failure_detail();
+  const long ticks = static_cast<long>(moved.executed.size());
+  EXPECT_EQ(arm.ik_stats().solves, 2 * ticks);
+  EXPECT_EQ(arm.ik_stats().reused, ticks - 1);  // the left target, after its first tick
+  // Both held (the left at a new target): each solved once more.
+  const Eigen::Vector3d left = arm.tool_position(Arm::left), right = moved.commanded.back();
+  for (int tick = 0; tick < 60; ++tick) ASSERT_EQ(arm.track(left, right), "");
+  EXPECT_EQ(arm.ik_stats().reused, ticks - 1 + 60 + 59);
+  EXPECT_LT((arm.tool_position(Arm::right) - end).norm(), 1e-3);
+  // A placement solves the placed arm's next target again.
+  ASSERT_EQ(arm.place_tool(Arm::right, right), "");
+  ASSERT_EQ(arm.track(left, right), "");
+  EXPECT_EQ(arm.ik_stats().reused, ticks - 1 + 60 + 59 + 1);
+}
+
 TEST(DualArm, PlaceToolPutsTheToolThereAtRestOrLeavesTheArm) {
   DualArm arm(DualArmParams{}, kTick);
   arm.set_tool_orientation(Arm::right, pointing_down());

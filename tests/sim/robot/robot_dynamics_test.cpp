@@ -135,6 +135,25 @@ TEST(RobotDynamics, FoldingTheArmOntoItselfIsASelfCollision) {
   EXPECT_EQ(robot.check(), "");
 }
 
+// The torso's arms are simulated apart (one multibody each): their links still
+// collide with one another.
+TEST(RobotDynamics, TheArmsOfOneTorsoTouchingIsASelfCollision) {
+  RobotDynamics robot(test::dual_arm(), RobotDynamicsParams{});
+  Eigen::VectorXd crossed = Eigen::VectorXd::Zero(robot.dof());
+  crossed[1] = 1.64;
+  crossed[3] = 0.51;
+  crossed[8] = 1.82;
+  crossed[10] = 0.77;
+  robot.reset(crossed);
+  robot.set_targets(crossed);
+  robot.step();
+  EXPECT_EQ(robot.check(), "self collision");
+  EXPECT_EQ(robot.failure_detail(), "links 'left_link5' and 'right_link7' touch");
+  robot.reset(Eigen::VectorXd::Zero(robot.dof()));
+  robot.step();
+  EXPECT_EQ(robot.check(), "") << robot.failure_detail();
+}
+
 TEST(RobotDynamics, LinksOverlappingAtZeroOrListedAreNoSelfCollision) {
   RobotModel model = test::seven_joint_arm();
   // A housing around joint2 on link1 that reaches into link3 at q = 0.
