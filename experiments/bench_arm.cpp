@@ -3,7 +3,7 @@
 // simulated seconds per wall-clock second.
 //   BM_ArmTick/7: one tick (1/240 s) of a seven-joint arm on a box base tracking
 //     a joint trajectory: new joint targets, one Bullet step, the checks.
-//   BM_ArmTick/14: the same for a torso with two seven-joint arms, one multibody.
+//   BM_ArmTick/14: the same for a torso with two seven-joint arms (a multibody per arm).
 //   BM_WarmStartedIk: one inverse kinematics solve of the shipped torso's right
 //     arm, warm-started at the last solution, the tool pointing down and moving
 //     0.25 mm per solve around a 5 cm circle (the tasks' tool speeds per tick).

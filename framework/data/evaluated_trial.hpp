@@ -1,6 +1,6 @@
 // One closed-loop evaluation trial as the generic evaluation saw it (paper,
-// Section IV-B): the scenario, what the policy generated, the robot executed
-// and the expert demonstrated for each segment, the contexts the policy was
+// Section IV-B): the scenario, what the policy generated, what was executed
+// and what the expert demonstrated for each segment, the contexts the policy was
 // given, the decision and the outcome. Figures and the trial rows are drawn from these.
 #pragma once
 

@@ -114,11 +114,11 @@ class Environment {
                              const std::vector<Demonstration>& /*train*/) const {}
 
   // What the task measures of an evaluation beyond what it declares: run metrics made from
-  // the trials alone (so the same trials give the same metrics) and lines added to the run's
-  // tables (headed "... (<label>)"), which may show wall-clock figures that no result keeps.
+  // the trials alone (so the same trials give the same metrics) and lines for the run's log
+  // (headed "... (<label>)"), which may show wall-clock figures that no result or table keeps.
   struct RunAdditions {
     std::vector<Metric> metrics;
-    std::string tables;
+    std::string log;
   };
   virtual RunAdditions run_additions(const std::vector<EvaluatedTrial>& /*trials*/,
                                      const std::string& /*label*/) const {

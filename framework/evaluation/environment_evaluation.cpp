@@ -390,7 +390,7 @@ EnvironmentEvaluation evaluate_in_environment(Environment& environment, Demonstr
   result.tables = evaluation_tables(task, decides, result.evaluated, segment_errors, label);
   const Environment::RunAdditions added = environment.run_additions(result.evaluated, label);
   result.metrics.insert(result.metrics.end(), added.metrics.begin(), added.metrics.end());
-  result.tables += added.tables;
+  if (!added.log.empty()) spdlog::info("{}", added.log);
   return result;
 }
 

@@ -334,6 +334,9 @@ TEST(EnvironmentEvaluation, TrialsOnTwoThreadsGiveTheResultsOfOne) {
     ASSERT_EQ(two.evaluated[t].generated.size(), one.evaluated[t].generated.size());
     for (const auto& [segment, path] : one.evaluated[t].generated)
       EXPECT_EQ(two.evaluated[t].generated.at(segment), path) << segment;
+    ASSERT_EQ(two.evaluated[t].executed.size(), one.evaluated[t].executed.size());
+    for (const auto& [segment, path] : one.evaluated[t].executed)
+      EXPECT_EQ(two.evaluated[t].executed.at(segment), path) << segment;
   }
   ASSERT_EQ(two.metrics.size(), one.metrics.size());
   for (size_t m = 0; m < one.metrics.size(); ++m) {

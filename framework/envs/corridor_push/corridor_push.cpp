@@ -229,7 +229,7 @@ Outcome CorridorPush::outcome() const {
 Environment::RunAdditions CorridorPush::run_additions(const std::vector<EvaluatedTrial>& trials,
                                                       const std::string& label) const {
   if (!params_.robot.on_arms()) return {};
-  return {robot_run_metrics(trials), ik_time_table(*ik_times_, label)};
+  return {robot_run_metrics(trials), ik_time_log_line(*ik_times_, label)};
 }
 
 std::string CorridorPush::classify_decision(const Eigen::MatrixXd& trajectory) const {

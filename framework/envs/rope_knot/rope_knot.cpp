@@ -200,7 +200,7 @@ void RopeKnot::write_figures(const std::string& directory,
 Environment::RunAdditions RopeKnot::run_additions(const std::vector<EvaluatedTrial>& trials,
                                                   const std::string& label) const {
   if (!params_.task.robot.on_arms()) return {};
-  return {robot_run_metrics(trials), ik_time_table(*ik_times_, label)};
+  return {robot_run_metrics(trials), ik_time_log_line(*ik_times_, label)};
 }
 
 }  // namespace corrmp

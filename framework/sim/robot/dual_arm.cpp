@@ -183,7 +183,6 @@ std::string DualArm::track(const Eigen::Vector3d& left_target,
     target.linear() = state.orientation;
     target.translation() = arm == Arm::left ? left_target : right_target;
     const Eigen::Isometry3d in_base = base_inverse * target;
-    ++ik_stats_.solves;
     if (state.solved_target && state.solved_target->matrix() == in_base.matrix()) {
       ++ik_stats_.reused;
       for (size_t j = 0; j < state.joints.size(); ++j) q[state.joints[j]] = state.solution[j];
@@ -191,10 +190,11 @@ std::string DualArm::track(const Eigen::Vector3d& left_target,
     }
     const auto started = std::chrono::steady_clock::now();
     const IkResult result = state.kinematics.solve(in_base, state.solution);
-    const double seconds =
-        std::chrono::duration<double>(std::chrono::steady_clock::now() - started).count();
-    ik_stats_.seconds += seconds;
-    if (solve_times_) solve_times_->add(seconds);
+    ++ik_stats_.solves;
+    if (solve_times_) {
+      solve_times_->add(
+          std::chrono::duration<double>(std::chrono::steady_clock::now() - started).count());
+    }
     if (result.status != IkResult::Status::ok) {
       ++ik_stats_.failures;
       const Eigen::Vector3d& p = target.translation();

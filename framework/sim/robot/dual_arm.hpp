@@ -114,13 +114,12 @@ class DualArm {
 
   // Inverse kinematics statistics of track() since construction.
   struct IkStats {
-    long solves = 0;  // tool targets mapped to joint positions (per arm and tick)
-    // Of those, answered by the arm's last solution: its target had not moved
-    // (the same tool pose in the base frame, bit for bit, as at the arm's last
-    // solve in track()), so the joint targets stay.
+    long solves = 0;  // tool targets track() solved with the IK
+    // Tool targets answered by the arm's last solution without solving: the
+    // target had not moved (the same tool pose in the base frame, bit for bit,
+    // as at the arm's last solve in track()), so the joint targets stay.
     long reused = 0;
-    long failures = 0;
-    double seconds = 0.0;  // wall time in solve(); not deterministic, for reports only
+    long failures = 0;  // of the solves
   };
   const IkStats& ik_stats() const { return ik_stats_; }
   // Also adds the wall time of each of track()'s solves to `times` (shared by a

@@ -52,9 +52,9 @@ std::vector<Metric> robot_run_metrics(const std::vector<EvaluatedTrial>& trials)
   return metrics;
 }
 
-std::string ik_time_table(const IkSolveTimes& times, const std::string& label) {
+std::string ik_time_log_line(const IkSolveTimes& times, const std::string& label) {
   if (times.solves() == 0) return "";
-  return fmt::format("IK time ({}): {} solves, median {:.1f} us, mean {:.1f} us per solve\n", label,
+  return fmt::format("IK time ({}): {} solves, median {:.1f} us, mean {:.1f} us per solve", label,
                      times.solves(), 1e6 * times.median_seconds(), 1e6 * times.mean_seconds());
 }
 

@@ -27,8 +27,8 @@ void add_robot_details(const DualArm& robot, std::map<std::string, double>& deta
 // the trials' largest joint tracking errors, one report column). None when no trial has them.
 std::vector<Metric> robot_run_metrics(const std::vector<EvaluatedTrial>& trials);
 
-// The run's table line of the IK's wall time: "IK time (<label>): N solves, median X us,
+// The run's log line of the IK's wall time: "IK time (<label>): N solves, median X us,
 // mean Y us per solve"; "" without solves.
-std::string ik_time_table(const IkSolveTimes& times, const std::string& label);
+std::string ik_time_log_line(const IkSolveTimes& times, const std::string& label);
 
 }  // namespace corrmp

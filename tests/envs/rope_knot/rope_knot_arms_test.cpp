@@ -126,7 +126,7 @@ TEST(RopeKnotOnArms, TrialsKeepTheRobotsFiguresAndTheRunReportsThem) {
   for (const Metric& m : added.metrics) metrics[m.name] = m.value;
   EXPECT_EQ(metrics.at("ik_success_rate"), 1.0);
   EXPECT_EQ(metrics.at("ik_solves"), trial.details.at("ik_solves"));
-  EXPECT_EQ(added.tables.rfind("IK time (r): ", 0), 0u) << added.tables;
+  EXPECT_EQ(added.log.rfind("IK time (r): ", 0), 0u) << added.log;
   const RopeKnot floating(RopeKnotEnvironmentParams{});
   EXPECT_EQ(floating.outcome().details.count("ik_solves"), 0u);
   EXPECT_TRUE(floating.run_additions({trial}, "r").metrics.empty());
