@@ -42,6 +42,11 @@ struct TaskDeclaration {
   std::vector<std::string> failure_categories;
 };
 
+// Whether a failed trial's reason is of `category`: the reason starts with the category's name.
+inline bool in_failure_category(const std::string& failure, const std::string& category) {
+  return failure.rfind(category, 0) == 0;
+}
+
 // The run metric counting the failed trials of a failure category: failures_<category>, spaces
 // as '_'.
 inline std::string failure_count_metric(const std::string& category) {

@@ -52,7 +52,7 @@ double outcome_mean(const std::vector<EvaluatedTrial>& trials, const std::string
 // Failed trials whose reason starts with `category`.
 int count_failures(const std::vector<EvaluatedTrial>& trials, const std::string& category) {
   return static_cast<int>(std::count_if(trials.begin(), trials.end(), [&](const EvaluatedTrial& t) {
-    return !t.success && t.failure.rfind(category, 0) == 0;
+    return !t.success && in_failure_category(t.failure, category);
   }));
 }
 

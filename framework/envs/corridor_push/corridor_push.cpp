@@ -8,6 +8,7 @@
 
 #include "core/parameter_error.hpp"
 #include "sim/robot/arm_gripper.hpp"
+#include "sim/robot/base_offset.hpp"
 #include "sim/robot/robot_run_metrics.hpp"
 
 namespace corrmp {
@@ -44,15 +45,6 @@ SceneDescription load_task_scene(const std::string& configured) {
   return scene;
 }
 
-double value_or_zero(const Scenario& scenario, const std::string& key) {
-  const auto it = scenario.find(key);
-  return it == scenario.end() ? 0.0 : it->second;
-}
-
-bool any_offset(const std::vector<double>& range) {
-  return std::any_of(range.begin(), range.end(), [](double r) { return r != 0.0; });
-}
-
 // The tool pointing down (tool z = world -z), its fingers closing along world x.
 Eigen::Matrix3d fingers_down() { return Eigen::Vector3d(1.0, -1.0, -1.0).asDiagonal(); }
 
@@ -60,7 +52,7 @@ Eigen::Matrix3d fingers_down() { return Eigen::Vector3d(1.0, -1.0, -1.0).asDiago
 
 CorridorPush::CorridorPush(const CorridorPushParams& params)
     : params_(params), scene_(load_task_scene(params.scene)) {
-  if (any_offset(params.base_offset_range) && !params.robot.on_arms()) {
+  if (moves_base(params.base_offset_range) && !params.robot.on_arms()) {
     throw ParameterError("base_offset_range",
                          "base_offset_range moves the robot's base: it needs robot.type dual_arm");
   }
@@ -101,13 +93,7 @@ Scenario CorridorPush::sample_scenario(Rng& rng) const {
   const double noise = params_.object_noise;
   scenario["object_dx"] = noise > 0 ? rng.uniform(-noise, noise) : 0.0;
   scenario["object_dy"] = noise > 0 ? rng.uniform(-noise, noise) : 0.0;
-  // Drawn last and only when set: the other keys stay those of a given rng stream.
-  const std::vector<double>& r = params_.base_offset_range;
-  if (any_offset(r)) {
-    scenario["base_dx"] = rng.uniform(-r[0], r[0]);
-    scenario["base_dy"] = rng.uniform(-r[1], r[1]);
-    scenario["base_dz"] = rng.uniform(-r[2], r[2]);
-  }
+  draw_base_offset(params_.base_offset_range, rng, scenario);
   return scenario;
 }
 
@@ -135,11 +121,8 @@ void CorridorPush::reset(const Scenario& scenario) {
   if (params_.robot.on_arms()) {
     // A fresh robot every reset, as the world is, so every trial replays alike; its base
     // moved by the scenario's offset (the scene stays where it is in the world).
-    DualArmParams arm_params = params_.robot.dual_arm;
-    const char* offsets[3] = {"base_dx", "base_dy", "base_dz"};
-    for (int i = 0; i < 3; ++i)
-      arm_params.base_position.at(i) += value_or_zero(scenario, offsets[i]);
-    robot_ = build_robot(arm_params, params_.physics.time_step);
+    robot_ =
+        build_robot(with_base_offset(params_.robot.dual_arm, scenario), params_.physics.time_step);
     robot_->time_solves_into(ik_times_);
     const Arm arm = params_.robot.driving_arm();
     robot_->set_tool_orientation(arm, fingers_down());

@@ -8,6 +8,7 @@
 #include <opencv2/imgproc.hpp>
 #include <optional>
 
+#include "core/task_declaration.hpp"
 #include "plot/plot_canvas.hpp"
 
 namespace corrmp {
@@ -39,7 +40,7 @@ const std::vector<cv::Scalar>& category_palette() {
 // The place of the first category `failure` starts with; -1 for none.
 int category_of(const std::string& failure, const std::vector<std::string>& categories) {
   for (size_t c = 0; c < categories.size(); ++c) {
-    if (failure.rfind(categories[c], 0) == 0) return static_cast<int>(c);
+    if (in_failure_category(failure, categories[c])) return static_cast<int>(c);
   }
   return -1;
 }

@@ -10,6 +10,7 @@
 #include <string>
 #include <utility>
 
+#include "sim/robot/base_offset.hpp"
 #include "sim/robot/robot_params.hpp"
 #include "sim/robot/robot_render.hpp"
 #include "sim/soft/soft_render.hpp"
@@ -124,9 +125,7 @@ RopeKnotScene::RopeKnotScene(const RopeKnotParams& params) : params_(params) {
   check_points(m.right_tuck, "right_tuck");
   check_scenarios_fit(params);
   vec3(params.base_offset_range, "base_offset_range");
-  const bool offset = std::any_of(params.base_offset_range.begin(), params.base_offset_range.end(),
-                                  [](double r) { return r != 0.0; });
-  if (offset && !params.robot.on_arms()) {
+  if (moves_base(params.base_offset_range) && !params.robot.on_arms()) {
     throw std::invalid_argument(
         "RopeKnotScene: base_offset_range moves the robot's base: it needs robot.type dual_arm");
   }
@@ -151,12 +150,7 @@ Scenario RopeKnotScene::sample(Rng& rng) const {
   s["drift_z"] = rng.uniform(-params_.drift_range[2], params_.drift_range[2]);
   // Drawn last: the other keys stay those of a given rng stream.
   s["noise_seed"] = static_cast<double>(rng.uniform_int(0, (int64_t{1} << 31) - 1));
-  const std::vector<double>& r = params_.base_offset_range;
-  if (r[0] != 0.0 || r[1] != 0.0 || r[2] != 0.0) {
-    s["base_dx"] = rng.uniform(-r[0], r[0]);
-    s["base_dy"] = rng.uniform(-r[1], r[1]);
-    s["base_dz"] = rng.uniform(-r[2], r[2]);
-  }
+  draw_base_offset(params_.base_offset_range, rng, s);
   return s;
 }
 
@@ -237,13 +231,8 @@ void RopeKnotScene::reset(const Scenario& scenario) {
 
 void RopeKnotScene::reset_arms(const Scenario& scenario, const Eigen::Vector3d& left,
                                const Eigen::Vector3d& right) {
-  DualArmParams arm = params_.robot.dual_arm;
-  const Eigen::Vector3d offset(value_or_zero(scenario, "base_dx"),
-                               value_or_zero(scenario, "base_dy"),
-                               value_or_zero(scenario, "base_dz"));
-  for (int i = 0; i < 3; ++i) arm.base_position.at(i) += offset[i];
   // A fresh robot every reset: a trial replays bit for bit.
-  arms_ = build_robot(arm, world_->time_step());
+  arms_ = build_robot(with_base_offset(params_.robot.dual_arm, scenario), world_->time_step());
   arms_->time_solves_into(ik_times_);
   arms_->set_tool_orientation(Arm::left, side_grasp());
   arms_->set_tool_orientation(Arm::right, top_grasp());
@@ -261,7 +250,7 @@ void RopeKnotScene::reset_arms(const Scenario& scenario, const Eigen::Vector3d& 
   left_target_ = arms_->tool_position(Arm::left);
   right_target_ = arms_->tool_position(Arm::right);
   const double reach = params_.gripper.max_speed * world_->time_step();
-  const double tolerance = 2.0 * arm.ik.position_tolerance;
+  const double tolerance = 2.0 * params_.robot.dual_arm.ik.position_tolerance;
   const int most = static_cast<int>(std::lround(kArmTransitTime / world_->time_step()));
   for (int t = 0; t < most; ++t) {
     if ((arms_->tool_position(Arm::left) - left).norm() < tolerance &&

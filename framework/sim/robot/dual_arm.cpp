@@ -251,15 +251,12 @@ const std::vector<std::string>& DualArm::hand_links(Arm arm) const {
 }
 
 std::vector<PlacedShape> DualArm::shapes() const {
+  const std::vector<Eigen::Isometry3d> poses = shape_poses();
   std::vector<PlacedShape> placed;
-  for (size_t i = 0; i < model_.links.size(); ++i) {
-    const RobotLink& link = model_.links[i];
-    if (link.collisions.empty()) continue;
-    const Eigen::Isometry3d pose = dynamics_->link_pose(static_cast<int>(i));
+  for (const RobotLink& link : model_.links) {
     for (const RobotShape& shape : link.collisions) {
-      PlacedShape p{link.name, shape};
-      p.shape.origin = pose * shape.origin;
-      placed.push_back(std::move(p));
+      placed.push_back({link.name, shape});
+      placed.back().shape.origin = poses.at(placed.size() - 1);
     }
   }
   return placed;
