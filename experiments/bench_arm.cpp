@@ -9,6 +9,8 @@
 //     0.25 mm per solve around a 5 cm circle (the tasks' tool speeds per tick).
 //   BM_CorridorTrialOnArms: the corridor expert's whole demonstration of one
 //     scenario, executed by the right arm (configs/common/corridor_arms.yaml).
+//   BM_CorridorTrialFloating: the same demonstration by the floating gripper,
+//     the task's own cost without the arms.
 //   BM_RopeTrialOnArms: a whole scripted half-hitch trial of the nominal
 //     scenario on both arms (configs/common/rope_arms.yaml).
 #include <benchmark/benchmark.h>
@@ -107,6 +109,19 @@ void BM_CorridorTrialOnArms(benchmark::State& state) {
   state.counters["successes"] = benchmark::Counter(successes, benchmark::Counter::kAvgIterations);
 }
 BENCHMARK(BM_CorridorTrialOnArms)->Unit(benchmark::kMillisecond);
+
+void BM_CorridorTrialFloating(benchmark::State& state) {
+  CorridorPush env{CorridorPushParams{}};
+  const Scenario push{{"corridor_offset", 0.021}, {"object_dx", 0.0}, {"object_dy", 0.0}};
+  CorridorExpert expert{CorridorExpertParams{}};
+  int successes = 0;
+  for (auto _ : state) {
+    expert.demonstrate(env, push, false);
+    successes += env.outcome().success;
+  }
+  state.counters["successes"] = benchmark::Counter(successes, benchmark::Counter::kAvgIterations);
+}
+BENCHMARK(BM_CorridorTrialFloating)->Unit(benchmark::kMillisecond);
 
 void BM_RopeTrialOnArms(benchmark::State& state) {
   RopeKnotScene scene(environment_of<RopeKnotParams>("configs/common/rope_arms.yaml"));

@@ -8,6 +8,8 @@
 #include <BulletDynamics/Featherstone/btMultiBodyJointLimitConstraint.h>
 #include <BulletDynamics/Featherstone/btMultiBodyJointMotor.h>
 #include <BulletDynamics/Featherstone/btMultiBodyLinkCollider.h>
+#include <BulletDynamics/Featherstone/btMultiBodyMLCPConstraintSolver.h>
+#include <BulletDynamics/MLCPSolvers/btDantzigSolver.h>
 #include <btBulletDynamicsCommon.h>
 #include <fmt/format.h>
 
@@ -102,12 +104,14 @@ struct RobotDynamics::Bullet {
   btDefaultCollisionConfiguration configuration;
   btCollisionDispatcher dispatcher{&configuration};
   btDbvtBroadphase broadphase;
-  btMultiBodyConstraintSolver solver;
+  btDantzigSolver mlcp;
+  btMultiBodyMLCPConstraintSolver solver{&mlcp};
   btMultiBodyDynamicsWorld world{&dispatcher, &broadphase, &solver, &configuration};
   // One fixed-base multibody per branch of the root (the root's movable
   // children and everything below each): branches of a fixed root do not
   // move one another, and the solver's rows of a smaller multibody cost less.
   std::vector<std::unique_ptr<btMultiBody>> multibodies;
+  std::vector<bool> braked;         // per multibody: frozen, not simulated (see the header)
   std::vector<int> body_multibody;  // per layout body: index into multibodies
   std::vector<int> body_link;       // per layout body: its link there, -1 for the root
   std::vector<std::unique_ptr<btCollisionShape>> shapes;
@@ -165,12 +169,17 @@ void RobotDynamics::build_multibody(const Eigen::Isometry3d& base_pose) {
   if (links.empty()) links.push_back(0);
   const LayoutBody& root = layout_.bodies[0];
   for (int links_here : links) {
+    // Sleep only when braked here: never on Bullet's own motion test, never
+    // woken by Bullet.
     auto multibody =
         std::make_unique<btMultiBody>(links_here, root.mass, to_vector(root.principal_inertia),
-                                      /*fixedBase=*/true, /*canSleep=*/false);
+                                      /*fixedBase=*/true, /*canSleep=*/true);
+    multibody->setSleepThreshold(-1);
+    multibody->setCanWakeup(false);
     multibody->setBaseWorldTransform(to_bullet(base_pose * root.com));
     bullet_->multibodies.push_back(std::move(multibody));
   }
+  bullet_->braked.assign(bullet_->multibodies.size(), false);
   for (int b = 1; b < count; ++b) {
     const LayoutBody& body = layout_.bodies[b];
     btMultiBody* multibody = bullet_->multibodies[branch[b]].get();
@@ -223,6 +232,9 @@ void RobotDynamics::build_colliders() {
     auto collider =
         std::make_unique<RobotLinkCollider>(&multibody, link, static_cast<int>(b), body.parent);
     collider->setCollisionShape(compound.get());
+    // The fixed root is static: it joins no branch's simulation island, so one
+    // branch can be braked while another moves.
+    if (link < 0) collider->setCollisionFlags(btCollisionObject::CF_STATIC_OBJECT);
     bullet_->shapes.push_back(std::move(compound));
     collider->setWorldTransform(link < 0 ? multibody.getBaseWorldTransform()
                                          : multibody.getLink(link).m_cachedWorldTransform);
@@ -301,6 +313,25 @@ Eigen::VectorXd RobotDynamics::upper_limits() const {
   return upper;
 }
 
+namespace {
+
+// Bullet skips a multibody whose link colliders are all asleep (its island's
+// motors, its dynamics and its integration).
+void set_braked(btMultiBody& multibody, bool braked) {
+  if (braked) {
+    multibody.clearVelocities();
+    multibody.goToSleep();
+  } else {
+    multibody.wakeUp();
+  }
+  for (int link = 0; link < multibody.getNumLinks(); ++link) {
+    btMultiBodyLinkCollider* collider = multibody.getLink(link).m_collider;
+    if (collider) collider->forceActivationState(braked ? ISLAND_SLEEPING : ACTIVE_TAG);
+  }
+}
+
+}  // namespace
+
 void RobotDynamics::reset(const Eigen::VectorXd& q) {
   if (q.size() != dof())
     throw std::invalid_argument(fmt::format(
@@ -310,9 +341,11 @@ void RobotDynamics::reset(const Eigen::VectorXd& q) {
     multibody.setJointPos(bullet_->body_link[i + 1], q[i]);
     multibody.setJointVel(bullet_->body_link[i + 1], 0.0);
   }
-  for (auto& multibody : bullet_->multibodies) {
-    multibody->clearForcesAndTorques();
-    multibody->clearVelocities();
+  for (size_t m = 0; m < bullet_->multibodies.size(); ++m) {
+    bullet_->multibodies[m]->clearForcesAndTorques();
+    bullet_->multibodies[m]->clearVelocities();
+    set_braked(*bullet_->multibodies[m], false);
+    bullet_->braked[m] = false;
   }
   update_kinematics();
   for (auto& multibody : bullet_->multibodies) {
@@ -354,6 +387,7 @@ void RobotDynamics::set_targets(const Eigen::VectorXd& positions,
 }
 
 void RobotDynamics::step() {
+  release_moved_brakes();
   const double dt = params_.time_step;
   for (int i = 0; i < dof(); ++i) {
     const double limit = model_.joints[layout_.movable_joints[i]].velocity;
@@ -369,7 +403,45 @@ void RobotDynamics::step() {
   bullet_->world.stepSimulation(dt, 0, dt);
   time_ += dt;
   update_kinematics();
+  brake_still_branches();
   run_checks();
+}
+
+int RobotDynamics::braked_branches() const {
+  return static_cast<int>(std::count(bullet_->braked.begin(), bullet_->braked.end(), true));
+}
+
+// A braked branch whose targets moved is released; one that Bullet simulated
+// anyway (its island merged with a moving branch's) is asleep again before the
+// step, and brake_still_branches() decides afresh after it.
+void RobotDynamics::release_moved_brakes() {
+  for (int i = 0; i < dof(); ++i) {
+    const int m = bullet_->body_multibody[i + 1];
+    if (bullet_->braked[m] && target_[i] != braked_target_[i]) bullet_->braked[m] = false;
+  }
+  for (size_t m = 0; m < bullet_->multibodies.size(); ++m)
+    set_braked(*bullet_->multibodies[m], bullet_->braked[m]);
+}
+
+void RobotDynamics::brake_still_branches() {
+  const double tolerance = params_.brake_tolerance;
+  if (tolerance <= 0) return;
+  std::vector<bool> still(bullet_->multibodies.size(), true);
+  for (int i = 0; i < dof(); ++i) {
+    const int m = bullet_->body_multibody[i + 1];
+    const btMultiBody& multibody = *bullet_->multibodies[m];
+    const int link = bullet_->body_link[i + 1];
+    if (motor_target_[i] != target_[i] ||
+        std::abs(multibody.getJointPos(link) - target_[i]) > tolerance ||
+        std::abs(multibody.getJointVel(link)) * params_.time_step > tolerance)
+      still[m] = false;
+  }
+  braked_target_ = target_;
+  for (size_t m = 0; m < still.size(); ++m) {
+    if (!still[m]) continue;
+    bullet_->braked[m] = true;
+    set_braked(*bullet_->multibodies[m], true);
+  }
 }
 
 void RobotDynamics::update_kinematics() {

@@ -3,8 +3,12 @@
 // one another, and the constraint solver's rows cost less on the smaller
 // bodies), tracking commanded joint trajectories with one velocity-limited
 // joint motor per movable joint (the paper's robot controller tracking IK joint
-// trajectories fed at a nominal rate). Fixed time step, one internal step per
-// tick: a fresh robot replays identically.
+// trajectories fed at a nominal rate), the motors' rows solved exactly each tick
+// (Bullet's MLCP solver with Dantzig's method; its iterative solver only where
+// that fails). A branch holding still is braked: once its joints have reached
+// unchanged targets and stopped (within params.brake_tolerance), it is frozen
+// and not simulated until its targets move. Fixed time step, one internal step
+// per tick: a fresh robot replays identically.
 //
 // Model to multibody: see multibody_layout.hpp (fixed joints merged, body
 // frames at the principal centre-of-mass axes). Bullet's scalars are single
@@ -40,7 +44,7 @@ namespace corrmp {
 struct RobotDynamicsParams {
   double time_step = 1.0 / 240.0;
   double gravity = 9.81;
-  int solver_iterations = 50;
+  int solver_iterations = 50;  // of the iterative solver, where the exact solve fails
   // The motor drives each joint towards the velocity
   //   position_gain * (position error) / time_step
   //   + velocity_gain * target_velocity + (1 - velocity_gain) * velocity,
@@ -51,6 +55,7 @@ struct RobotDynamicsParams {
   double tracking_error_bound = 0.05;  // rad (m for prismatic joints)
   double joint_limit_margin = 0.01;    // rad (m)
   double contact_margin = 0.001;       // m
+  double brake_tolerance = 1e-5;       // rad (m) from the target, and per tick of motion; 0: never
 
   template <class Fields>
   void describe(Fields& f) {
@@ -66,6 +71,10 @@ struct RobotDynamicsParams {
     f("joint_limit_margin", joint_limit_margin,
       "how far a joint may pass its limits before a failure (rad or m)", at_least(0.0));
     f("contact_margin", contact_margin, "distance below which links touch (m)", at_least(0.0));
+    f("brake_tolerance", brake_tolerance,
+      "an arm this close to unchanged targets and moving less than this per tick is braked "
+      "until its targets move (rad or m; 0: never braked)",
+      at_least(0.0));
   }
 };
 
@@ -101,6 +110,8 @@ class RobotDynamics {
 
   void step();
   double time() const { return time_; }
+  // How many of the robot's branches (its multibodies) are braked now.
+  int braked_branches() const;
   double time_step() const { return params_.time_step; }
 
   Eigen::VectorXd positions() const;
@@ -126,6 +137,8 @@ class RobotDynamics {
   void build_motors();
   void allow_contacts_at_zero(const std::vector<std::pair<std::string, std::string>>& allowed);
   void update_kinematics();
+  void release_moved_brakes();
+  void brake_still_branches();
   void run_checks();
   bool fail(const std::string& category, const std::string& detail);
 
@@ -137,6 +150,7 @@ class RobotDynamics {
   Eigen::VectorXd target_;           // requested, clamped to the limits
   Eigen::VectorXd target_velocity_;  // requested; empty when not given
   Eigen::VectorXd motor_target_;     // moving towards target_ at the velocity limits
+  Eigen::VectorXd braked_target_;    // target_ when the braked branches were braked
   bool target_beyond_limits_ = false;
   std::string target_detail_;
   std::string failure_;

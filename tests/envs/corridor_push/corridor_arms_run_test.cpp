@@ -43,7 +43,9 @@ TEST(CorridorArmsRun, ATinyRunEvaluatesItsTrialsOnTheArms) {
   ASSERT_FALSE(tables.empty());
   EXPECT_EQ(tables.find("IK time"), std::string::npos) << tables;
   for (const auto& [name, value] : runs.front().metrics) {
-    if (name.rfind("ik_", 0) == 0) EXPECT_TRUE(name == "ik_solves" || name == "ik_success_rate");
+    if (name.rfind("ik_", 0) == 0) {
+      EXPECT_TRUE(name == "ik_solves" || name == "ik_success_rate");
+    }
   }
 }
 

@@ -118,16 +118,17 @@ TEST(DualArm, ATargetThatHasNotMovedKeepsItsJointTargets) {
   const long ticks = static_cast<long>(moved.executed.size());
   EXPECT_EQ(arm.ik_stats().reused, ticks - 1);  // the left target, after its first tick
   EXPECT_EQ(arm.ik_stats().solves, 2 * ticks - arm.ik_stats().reused);
-  // Both held: the left solved once at its new target, the right kept its last solve.
+  // Both held: the left arm, braked at home since its first tick, is exactly
+  // where its target was, and the right kept its last solve.
   const Eigen::Vector3d left = arm.tool_position(Arm::left), right = moved.commanded.back();
   for (int tick = 0; tick < 60; ++tick) ASSERT_EQ(arm.track(left, right), "");
-  EXPECT_EQ(arm.ik_stats().reused, ticks - 1 + 60 + 59);
-  EXPECT_EQ(arm.ik_stats().solves, ticks + 1 + 1);
+  EXPECT_EQ(arm.ik_stats().reused, ticks - 1 + 60 + 60);
+  EXPECT_EQ(arm.ik_stats().solves, ticks + 1);
   EXPECT_LT((arm.tool_position(Arm::right) - end).norm(), 1e-3);
   // A placement solves the placed arm's next target again.
   ASSERT_EQ(arm.place_tool(Arm::right, right), "");
   ASSERT_EQ(arm.track(left, right), "");
-  EXPECT_EQ(arm.ik_stats().reused, ticks - 1 + 60 + 59 + 1);
+  EXPECT_EQ(arm.ik_stats().reused, ticks - 1 + 60 + 60 + 1);
 }
 
 TEST(DualArm, PlaceToolPutsTheToolThereAtRestOrLeavesTheArm) {

@@ -2,6 +2,7 @@
 
 #include <gtest/gtest.h>
 
+#include <algorithm>
 #include <cmath>
 
 #include "test_arms.hpp"
@@ -152,6 +153,58 @@ TEST(RobotDynamics, TheArmsOfOneTorsoTouchingIsASelfCollision) {
   robot.reset(Eigen::VectorXd::Zero(robot.dof()));
   robot.step();
   EXPECT_EQ(robot.check(), "") << robot.failure_detail();
+}
+
+TEST(RobotDynamics, AnArmHoldingStillIsBrakedUntilItsTargetsMove) {
+  RobotDynamics robot(test::dual_arm(), RobotDynamicsParams{});
+  const Eigen::VectorXd home = Eigen::VectorXd::Zero(robot.dof());
+  robot.set_targets(home);
+  robot.step();
+  EXPECT_EQ(robot.braked_branches(), 2);
+  const Eigen::VectorXd held = robot.positions();
+  Eigen::VectorXd target = home;
+  for (int tick = 1; tick <= 120; ++tick) {
+    target[9] = 0.3 * tick / 120;  // the right arm's second joint
+    robot.set_targets(target);
+    robot.step();
+    ASSERT_EQ(robot.check(), "") << robot.failure_detail();
+    ASSERT_EQ(robot.braked_branches(), 1);
+  }
+  for (int tick = 0; tick < 240 && robot.braked_branches() < 2; ++tick) {
+    robot.step();
+    ASSERT_EQ(robot.check(), "") << robot.failure_detail();
+  }
+  EXPECT_EQ(robot.braked_branches(), 2);
+  EXPECT_LE((robot.positions() - target).cwiseAbs().maxCoeff(),
+            RobotDynamicsParams{}.brake_tolerance);
+  EXPECT_EQ(robot.positions().head(7), held.head(7));  // the left arm never moved
+  EXPECT_EQ(robot.velocities(), Eigen::VectorXd::Zero(robot.dof()));
+
+  RobotDynamicsParams never;
+  never.brake_tolerance = 0;
+  RobotDynamics unbraked(test::dual_arm(), never);
+  unbraked.set_targets(home);
+  for (int tick = 0; tick < 10; ++tick) unbraked.step();
+  EXPECT_EQ(unbraked.braked_branches(), 0);
+}
+
+TEST(RobotDynamics, AnArmMovingIntoABrakedOneIsASelfCollision) {
+  RobotDynamics robot(test::dual_arm(), RobotDynamicsParams{});
+  Eigen::VectorXd crossed = Eigen::VectorXd::Zero(robot.dof());
+  crossed[1] = 1.64;
+  crossed[3] = 0.51;
+  Eigen::VectorXd start = crossed;
+  crossed[8] = 1.82;
+  crossed[10] = 0.77;
+  robot.reset(start);
+  robot.step();
+  ASSERT_EQ(robot.braked_branches(), 2);
+  for (int tick = 1; tick <= 480 && robot.check().empty(); ++tick) {
+    robot.set_targets(start + (crossed - start) * std::min(1.0, tick / 240.0));
+    robot.step();
+    ASSERT_EQ(robot.braked_branches(), 1);  // the left arm, throughout
+  }
+  EXPECT_EQ(robot.check(), "self collision") << robot.failure_detail();
 }
 
 TEST(RobotDynamics, LinksOverlappingAtZeroOrListedAreNoSelfCollision) {
