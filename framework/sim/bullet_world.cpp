@@ -165,10 +165,10 @@ std::string BulletWorld::blow_up(double bound, double max_speed) const {
     const Eigen::Vector3d p = position(static_cast<int>(i));
     const Eigen::Vector3d v = linear_velocity(static_cast<int>(i));
     if (!p.allFinite() || !v.allFinite()) {
-      return fmt::format("physics blow-up: body '{}' has a non-finite state", infos_[i].name);
+      return fmt::format("{}: body '{}' has a non-finite state", kBlowUpFailure, infos_[i].name);
     }
     if (p.norm() > bound || v.norm() > max_speed) {
-      return fmt::format("physics blow-up: body '{}' at |p| {:.3g} m moving at {:.3g} m/s",
+      return fmt::format("{}: body '{}' at |p| {:.3g} m moving at {:.3g} m/s", kBlowUpFailure,
                          infos_[i].name, p.norm(), v.norm());
     }
   }

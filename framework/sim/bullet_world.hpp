@@ -22,6 +22,9 @@ class btSequentialImpulseConstraintSolver;
 
 namespace corrmp {
 
+// How BulletWorld::blow_up()'s descriptions start (a failure category).
+inline constexpr const char* kBlowUpFailure = "physics blow-up";
+
 struct PhysicsParams {
   double time_step = 1.0 / 240.0;
   int solver_iterations = 50;
@@ -74,7 +77,8 @@ class BulletWorld {
   bool touching(int a, int b, double margin = 1e-4) const;
 
   // "" when every dynamic body is finite, within `bound` metres of the origin
-  // and slower than `max_speed`; else a description of the blow-up.
+  // and slower than `max_speed`; else a description of the blow-up, starting
+  // with kBlowUpFailure.
   std::string blow_up(double bound = 10.0, double max_speed = 20.0) const;
 
   int body_count() const { return static_cast<int>(bodies_.size()); }

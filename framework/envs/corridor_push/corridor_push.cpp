@@ -15,6 +15,10 @@ namespace corrmp {
 
 namespace {
 
+// The task's own failure reasons start with these (its failure categories on the arms).
+constexpr const char* kTouchedCorridor = "the object touched the corridor";
+constexpr const char* kStoppedShort = "the object stopped";
+
 // Scene files are looked up relative to the working directory, then to the
 // source tree, so configs work from any directory.
 std::string resolve_asset(const std::string& path) {
@@ -81,8 +85,9 @@ TaskReport CorridorPush::report() const {
   report.plot_horizontal = 1;  // top view: y to the right, x up
   report.plot_vertical = 0;
   if (params_.robot.on_arms()) {
-    report.failure_categories = {"out of reach", "joint limit", "self collision", "tracking error",
-                                 "physics fault"};
+    report.failure_categories = {"out of reach",   "joint limit",   "self collision",
+                                 "tracking error", "physics fault", kBlowUpFailure,
+                                 kTouchedCorridor, kStoppedShort};
   }
   return report;
 }
@@ -197,10 +202,10 @@ Outcome CorridorPush::outcome() const {
   if (!failure_.empty()) {
     outcome = {false, failure_, {}, {}};
   } else if (touched_corridor_) {
-    outcome = {false, "the object touched the corridor", {}, {}};
+    outcome = {false, kTouchedCorridor, {}, {}};
   } else if (object_position().y() <= corridor_mid_y()) {
     outcome = {false,
-               fmt::format("the object stopped {:.1f} cm before the corridor's midpoint",
+               fmt::format("{} {:.1f} cm before the corridor's midpoint", kStoppedShort,
                            100 * (corridor_mid_y() - object_position().y())),
                {},
                {}};

@@ -28,7 +28,8 @@ TEST(CorridorArmsRun, ATinyRunEvaluatesItsTrialsOnTheArms) {
   ASSERT_TRUE(runs.front().task.has_value());
   EXPECT_EQ(runs.front().task->failure_categories,
             (std::vector<std::string>{"out of reach", "joint limit", "self collision",
-                                      "tracking error", "physics fault"}));
+                                      "tracking error", "physics fault", "physics blow-up",
+                                      "the object touched the corridor", "the object stopped"}));
   EXPECT_EQ(runs.front().metrics.count("failures_out_of_reach"), 1u);
   // The robot's run metrics are recorded; its IK wall time is printed only.
   for (const char* metric : {"ik_solves", "ik_success_rate", "joint_tracking_error_mean_rad",

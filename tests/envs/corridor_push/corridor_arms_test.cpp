@@ -2,10 +2,12 @@
 #include <gmock/gmock.h>
 #include <gtest/gtest.h>
 
+#include <algorithm>
 #include <cmath>
 #include <opencv2/core.hpp>
 
 #include "core/parameter_error.hpp"
+#include "core/task_declaration.hpp"
 #include "envs/corridor_push/corridor_expert.hpp"
 #include "envs/corridor_push/corridor_push.hpp"
 #include "envs/corridor_push/path_sampling.hpp"
@@ -28,7 +30,8 @@ TEST(CorridorOnArms, TheExpertSucceedsThroughTheArmWhichLagsTheCommandByMillimet
   ASSERT_NE(env.robot(), nullptr);
   EXPECT_EQ(env.report().failure_categories,
             (std::vector<std::string>{"out of reach", "joint limit", "self collision",
-                                      "tracking error", "physics fault"}));
+                                      "tracking error", "physics fault", "physics blow-up",
+                                      "the object touched the corridor", "the object stopped"}));
   const Demonstration demo = CorridorExpert{CorridorExpertParams{}}.demonstrate(env, kPush, false);
   const Outcome outcome = env.outcome();
   EXPECT_TRUE(outcome.success) << outcome.failure;
@@ -44,6 +47,22 @@ TEST(CorridorOnArms, TheExpertSucceedsThroughTheArmWhichLagsTheCommandByMillimet
   EXPECT_EQ(outcome.details.at("ik_solves"), env.robot()->ik_stats().solves);
   EXPECT_GT(outcome.details.at("max_tracking_error"), 0.0);
   EXPECT_TRUE(CorridorPush{CorridorPushParams{}}.outcome().details.empty());
+}
+
+TEST(CorridorOnArms, AnObjectLeftWhereItWasFailsInTheTasksOwnCategory) {
+  CorridorPush env{on_arms()};
+  env.reset(kPush);
+  const Eigen::MatrixXd still = env.effector_position().replicate(2, 1);
+  ASSERT_EQ(env.execute("pre", still), "");
+  const Outcome outcome = env.outcome();
+  ASSERT_FALSE(outcome.success);
+  const std::vector<std::string>& categories = env.report().failure_categories;
+  EXPECT_EQ(
+      std::count_if(categories.begin(), categories.end(),
+                    [&](const std::string& c) { return in_failure_category(outcome.failure, c); }),
+      1)
+      << outcome.failure;
+  EXPECT_TRUE(in_failure_category(outcome.failure, "the object stopped")) << outcome.failure;
 }
 
 TEST(CorridorOnArms, ATrialReplaysBitIdentically) {
