@@ -316,7 +316,9 @@ Eigen::VectorXd RobotDynamics::upper_limits() const {
 namespace {
 
 // Bullet skips a multibody whose link colliders are all asleep (its island's
-// motors, its dynamics and its integration).
+// motors, its dynamics and its integration). A braked branch's links are static
+// as well, held as brakes hold them: a moving branch still collides with them
+// but never joins them in its simulation island (which would wake them).
 void set_braked(btMultiBody& multibody, bool braked) {
   if (braked) {
     multibody.clearVelocities();
@@ -326,7 +328,11 @@ void set_braked(btMultiBody& multibody, bool braked) {
   }
   for (int link = 0; link < multibody.getNumLinks(); ++link) {
     btMultiBodyLinkCollider* collider = multibody.getLink(link).m_collider;
-    if (collider) collider->forceActivationState(braked ? ISLAND_SLEEPING : ACTIVE_TAG);
+    if (!collider) continue;
+    const int flags = collider->getCollisionFlags();
+    collider->setCollisionFlags(braked ? flags | btCollisionObject::CF_STATIC_OBJECT
+                                       : flags & ~btCollisionObject::CF_STATIC_OBJECT);
+    collider->forceActivationState(braked ? ISLAND_SLEEPING : ACTIVE_TAG);
   }
 }
 
@@ -353,6 +359,7 @@ void RobotDynamics::reset(const Eigen::VectorXd& q) {
                                                     bullet_->scratch_origins);
   }
   target_ = q;
+  last_target_ = q;
   motor_target_ = q;
   target_velocity_.resize(0);
   target_beyond_limits_ = false;
@@ -411,13 +418,17 @@ int RobotDynamics::braked_branches() const {
   return static_cast<int>(std::count(bullet_->braked.begin(), bullet_->braked.end(), true));
 }
 
-// A braked branch whose targets moved is released; one that Bullet simulated
-// anyway (its island merged with a moving branch's) is asleep again before the
-// step, and brake_still_branches() decides afresh after it.
+// Whether joint i's command moved since the last step: a new position target
+// or a target velocity.
+bool RobotDynamics::command_moved(int i) const {
+  return target_[i] != last_target_[i] ||
+         (target_velocity_.size() != 0 && target_velocity_[i] != 0.0);
+}
+
+// A braked branch whose command moved is released.
 void RobotDynamics::release_moved_brakes() {
   for (int i = 0; i < dof(); ++i) {
-    const int m = bullet_->body_multibody[i + 1];
-    if (bullet_->braked[m] && target_[i] != braked_target_[i]) bullet_->braked[m] = false;
+    if (command_moved(i)) bullet_->braked[bullet_->body_multibody[i + 1]] = false;
   }
   for (size_t m = 0; m < bullet_->multibodies.size(); ++m)
     set_braked(*bullet_->multibodies[m], bullet_->braked[m]);
@@ -425,22 +436,20 @@ void RobotDynamics::release_moved_brakes() {
 
 void RobotDynamics::brake_still_branches() {
   const double tolerance = params_.brake_tolerance;
-  if (tolerance <= 0) return;
-  std::vector<bool> still(bullet_->multibodies.size(), true);
+  std::vector<bool> still(bullet_->multibodies.size(), tolerance > 0);
   for (int i = 0; i < dof(); ++i) {
     const int m = bullet_->body_multibody[i + 1];
     const btMultiBody& multibody = *bullet_->multibodies[m];
     const int link = bullet_->body_link[i + 1];
-    if (motor_target_[i] != target_[i] ||
+    if (command_moved(i) || motor_target_[i] != target_[i] ||
         std::abs(multibody.getJointPos(link) - target_[i]) > tolerance ||
         std::abs(multibody.getJointVel(link)) * params_.time_step > tolerance)
       still[m] = false;
   }
-  braked_target_ = target_;
+  last_target_ = target_;
   for (size_t m = 0; m < still.size(); ++m) {
-    if (!still[m]) continue;
-    bullet_->braked[m] = true;
-    set_braked(*bullet_->multibodies[m], true);
+    bullet_->braked[m] = still[m];
+    if (still[m]) set_braked(*bullet_->multibodies[m], true);
   }
 }
 

@@ -6,9 +6,10 @@
 // trajectories fed at a nominal rate), the motors' rows solved exactly each tick
 // (Bullet's MLCP solver with Dantzig's method; its iterative solver only where
 // that fails). A branch holding still is braked: once its joints have reached
-// unchanged targets and stopped (within params.brake_tolerance), it is frozen
-// and not simulated until its targets move. Fixed time step, one internal step
-// per tick: a fresh robot replays identically.
+// targets unchanged since the last step, with no target velocity, and stopped
+// (within params.brake_tolerance), it is frozen, not simulated and static to
+// the other branches until its command moves.
+// Fixed time step, one internal step per tick: a fresh robot replays identically.
 //
 // Model to multibody: see multibody_layout.hpp (fixed joints merged, body
 // frames at the principal centre-of-mass axes). Bullet's scalars are single
@@ -137,6 +138,7 @@ class RobotDynamics {
   void build_motors();
   void allow_contacts_at_zero(const std::vector<std::pair<std::string, std::string>>& allowed);
   void update_kinematics();
+  bool command_moved(int joint) const;
   void release_moved_brakes();
   void brake_still_branches();
   void run_checks();
@@ -150,7 +152,7 @@ class RobotDynamics {
   Eigen::VectorXd target_;           // requested, clamped to the limits
   Eigen::VectorXd target_velocity_;  // requested; empty when not given
   Eigen::VectorXd motor_target_;     // moving towards target_ at the velocity limits
-  Eigen::VectorXd braked_target_;    // target_ when the braked branches were braked
+  Eigen::VectorXd last_target_;      // target_ at the last step
   bool target_beyond_limits_ = false;
   std::string target_detail_;
   std::string failure_;

@@ -1,4 +1,4 @@
-// The soft-body rope and its self-contact pass (paper, Section IV-C).
+// The soft-body rope (paper, Section IV-C); its self-contact pass is rope_self_contact.
 #include "sim/soft/rope.hpp"
 
 #include <BulletSoftBody/btSoftBody.h>
@@ -9,52 +9,14 @@
 #include <cmath>
 #include <stdexcept>
 
+#include "sim/soft/rope_self_contact.hpp"
+
 namespace corrmp {
 
 namespace {
 
 Eigen::Vector3d eigen(const btVector3& v) { return Eigen::Vector3d(v.x(), v.y(), v.z()); }
 btVector3 bullet(const Eigen::Vector3d& v) { return btVector3(v.x(), v.y(), v.z()); }
-
-// Closest points of segments [p0, p1] and [q0, q1]: parameters s and t in [0, 1].
-// A zero-length segment is a point (its parameter is 0).
-void closest_parameters(const Eigen::Vector3d& p0, const Eigen::Vector3d& p1,
-                        const Eigen::Vector3d& q0, const Eigen::Vector3d& q1, double& s,
-                        double& t) {
-  const Eigen::Vector3d d1 = p1 - p0;
-  const Eigen::Vector3d d2 = q1 - q0;
-  const Eigen::Vector3d r = p0 - q0;
-  const double a = d1.squaredNorm();
-  const double e = d2.squaredNorm();
-  const double f = d2.dot(r);
-  const double c = d1.dot(r);
-  const double b = d1.dot(d2);
-  constexpr double kTiny = 1e-24;  // squared length of a zero-length segment
-  if (a <= kTiny && e <= kTiny) {
-    s = t = 0.0;
-    return;
-  }
-  if (a <= kTiny) {
-    s = 0.0;
-    t = std::clamp(f / e, 0.0, 1.0);
-    return;
-  }
-  if (e <= kTiny) {
-    t = 0.0;
-    s = std::clamp(-c / a, 0.0, 1.0);
-    return;
-  }
-  const double denom = a * e - b * b;
-  s = denom > 1e-12 * a * e ? std::clamp((b * f - c * e) / denom, 0.0, 1.0) : 0.0;
-  t = (b * s + f) / e;
-  if (t < 0.0) {
-    t = 0.0;
-    s = std::clamp(-c / a, 0.0, 1.0);
-  } else if (t > 1.0) {
-    t = 1.0;
-    s = std::clamp((b - c) / a, 0.0, 1.0);
-  }
-}
 
 }  // namespace
 
@@ -188,105 +150,21 @@ void Rope::set_node(int i, const Eigen::Vector3d& position) {
 
 void Rope::self_contact() {
   const int n = node_count();
-  std::vector<Eigen::Vector3d> x(n), v(n);
-  std::vector<double> im(n);
+  RopeContactState state;
+  state.x.resize(n);
+  state.v.resize(n);
+  state.inverse_mass.resize(n);
   for (int i = 0; i < n; ++i) {
-    x[i] = eigen(body_->m_nodes[i].m_x);
-    v[i] = eigen(body_->m_nodes[i].m_v);
-    im[i] = body_->m_nodes[i].m_im;
+    state.x[i] = eigen(body_->m_nodes[i].m_x);
+    state.v[i] = eigen(body_->m_nodes[i].m_v);
+    state.inverse_mass[i] = body_->m_nodes[i].m_im;
   }
-  const double contact = 2.0 * world_.to_units(params_.radius);
-  double longest = 0;
-  for (int i = 0; i + 1 < n; ++i) longest = std::max(longest, (x[i + 1] - x[i]).norm());
-  const double reach = longest + contact;
-  bool changed = false;
-  double moved = 0;  // bounds how far any node has been pushed in this pass
-
-  // Segments i and j (j >= i + 3) in contact are resolved at once, in the
-  // order of (i, j); returns whether they were.
-  auto resolve = [&](int i, int j) {
-    if ((x[i] + x[i + 1] - x[j] - x[j + 1]).squaredNorm() > 4.0 * reach * reach) return false;
-    double s = 0, t = 0;
-    closest_parameters(x[i], x[i + 1], x[j], x[j + 1], s, t);
-    const Eigen::Vector3d p = x[i] + s * (x[i + 1] - x[i]);
-    const Eigen::Vector3d q = x[j] + t * (x[j + 1] - x[j]);
-    Eigen::Vector3d normal = p - q;
-    const double distance = normal.norm();
-    if (distance >= contact || distance < 1e-9) return false;
-    normal /= distance;
-    const int k[4] = {i, i + 1, j, j + 1};
-    const double w[4] = {1 - s, s, -(1 - t), -t};
-    double weight = 0;
-    for (int m = 0; m < 4; ++m) weight += w[m] * w[m] * im[k[m]];
-    if (weight <= 0) return false;
-    const double push = (contact - distance) / weight;
-    Eigen::Vector3d relative = Eigen::Vector3d::Zero();
-    for (int m = 0; m < 4; ++m) relative += w[m] * v[k[m]];
-    const double approach = relative.dot(normal);
-    const double normal_impulse = approach < 0 ? -approach / weight : 0.0;
-    const Eigen::Vector3d tangential = relative - approach * normal;
-    const double slide = tangential.norm();
-    Eigen::Vector3d friction = Eigen::Vector3d::Zero();
-    if (slide > 1e-12) {
-      const double stop = slide / weight;
-      const double limit = params_.friction * (normal_impulse + push / world_.time_step());
-      friction = -std::min(stop, limit) * tangential / slide;
-    }
-    double largest = 0;
-    for (int m = 0; m < 4; ++m) {
-      const double scale = w[m] * im[k[m]];
-      x[k[m]] += scale * push * normal;
-      v[k[m]] += scale * (normal_impulse * normal + friction);
-      largest = std::max(largest, std::abs(scale * push));
-    }
-    moved += largest;
-    return changed = true;
-  };
-
-  // Every pair from (i0, j0) on, in order: the plain sweep.
-  auto resolve_all_from = [&](int i0, int j0) {
-    for (int i = i0; i + 1 < n; ++i)
-      for (int j = i == i0 ? j0 : i + 3; j + 1 < n; ++j) resolve(i, j);
-  };
-
-  // The same pairs in the same order, found faster: a pair whose segment
-  // midpoint sums (x_i + x_i+1) lie further apart than 2 reach + slack at the
-  // start cannot pass resolve()'s first test while the nodes have moved less
-  // than slack / 4 in all; past half of that, the plain sweep takes over.
-  const double slack = contact;
-  const double window = 2.0 * reach + slack;
-  const int segments = n - 1;
-  std::vector<Eigen::Vector3d> sum(std::max(segments, 0));
-  for (int i = 0; i < segments; ++i) sum[i] = x[i] + x[i + 1];
-  int axis = 0;  // swept along the axis the rope spans most
-  if (segments > 0) {
-    Eigen::Vector3d lo = sum[0], hi = sum[0];
-    for (const Eigen::Vector3d& s : sum) lo = lo.cwiseMin(s), hi = hi.cwiseMax(s);
-    (hi - lo).maxCoeff(&axis);
-  }
-  std::vector<int> order(sum.size());
-  for (int i = 0; i < segments; ++i) order[i] = i;
-  std::sort(order.begin(), order.end(), [&](int a, int b) { return sum[a][axis] < sum[b][axis]; });
-  std::vector<std::pair<int, int>> candidates;
-  for (int a = 0; a < segments; ++a) {
-    for (int b = a + 1; b < segments && sum[order[b]][axis] - sum[order[a]][axis] <= window; ++b) {
-      const int i = std::min(order[a], order[b]), j = std::max(order[a], order[b]);
-      if (j >= i + 3 && (sum[i] - sum[j]).squaredNorm() <= window * window)
-        candidates.emplace_back(i, j);
-    }
-  }
-  std::sort(candidates.begin(), candidates.end());
-  for (const auto& [i, j] : candidates) {
-    if (resolve(i, j) && 4.0 * moved > 0.5 * slack) {
-      resolve_all_from(i, j + 1);
-      break;
-    }
-  }
-
+  const bool changed = resolve_self_contacts(
+      state, {world_.to_units(params_.radius), params_.friction, world_.time_step()});
   if (!changed) return;
   for (int i = 0; i < n; ++i) {
-    body_->m_nodes[i].m_x = bullet(x[i]);
-    body_->m_nodes[i].m_v = bullet(v[i]);
+    body_->m_nodes[i].m_x = bullet(state.x[i]);
+    body_->m_nodes[i].m_v = bullet(state.v[i]);
   }
 }
 

@@ -1,0 +1,34 @@
+// The rope's self-contact pass (paper, Section IV-C): pushes non-adjacent
+// segments closer than two radii apart (by inverse mass), removes their
+// approaching velocity and applies friction, one pair at a time in the order of
+// (i, j), j >= i + 3, each pair seeing the nodes as the pairs before left them.
+#pragma once
+
+#include <Eigen/Core>
+#include <vector>
+
+namespace corrmp {
+
+// The rope's nodes, changed in place.
+struct RopeContactState {
+  std::vector<Eigen::Vector3d> x;  // positions
+  std::vector<Eigen::Vector3d> v;  // velocities
+  std::vector<double> inverse_mass;
+};
+
+struct RopeContactParams {
+  double radius = 0;     // in the units of x
+  double friction = 0;   // Coulomb coefficient between segments
+  double time_step = 0;  // s, turns the push into a friction bound
+};
+
+// How the pairs are found. `candidates` (sweep and prune) gives exactly the
+// results of `all_pairs` (every pair tested), faster; `all_pairs` is the
+// reference it is tested against.
+enum class SelfContactSearch { candidates, all_pairs };
+
+// One pass; returns whether any pair was in contact (and the state changed).
+bool resolve_self_contacts(RopeContactState& state, const RopeContactParams& params,
+                           SelfContactSearch search = SelfContactSearch::candidates);
+
+}  // namespace corrmp
