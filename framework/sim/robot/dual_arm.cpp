@@ -75,6 +75,15 @@ DualArm::DualArm(const DualArmParams& params, double time_step) : params_(params
     throw ConfigError(fmt::format("{}: base_position has {} values, not 3", params.urdf,
                                   params.base_position.size()));
   }
+  // The robot's controller runs at the task's tick; a different one asked for
+  // (the default aside, which cannot be told from no value) would be ignored.
+  if (params.control.time_step != RobotDynamicsParams{}.time_step &&
+      params.control.time_step != time_step) {
+    throw ConfigError(
+        fmt::format("{}: control.time_step {:.6g} s: the robot steps at the task's tick ({:.6g} "
+                    "s); leave it out",
+                    params.urdf, params.control.time_step, time_step));
+  }
   RobotDynamicsParams control = params.control;
   control.time_step = time_step;
   Eigen::Isometry3d root = Eigen::Isometry3d::Identity();

@@ -42,7 +42,7 @@ struct DualArmParams {
   std::vector<double> left_home{-0.16, 1.15, 0.49, 1.68, -1.68, -1.14, -1.19};
   std::vector<double> right_home{0.33, 1.08, -0.72, 1.74, 1.80, -0.99, 1.08};
   IkParams ik;
-  RobotDynamicsParams control;  // its time_step is replaced by the task's
+  RobotDynamicsParams control;  // its time_step is the task's tick (another is refused)
   // Links that may touch one another without a self collision (every pair of them).
   std::vector<std::string> touching_links;
 

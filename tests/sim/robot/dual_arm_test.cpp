@@ -167,6 +167,12 @@ TEST(DualArm, UnusableConfigurationIsAConfigErrorNamingIt) {
   short_home.left_home = {0.0, 1.0, 0.0, 1.5, 0.0, -1.0};
   const std::string error = testing::config_error_of([&] { DualArm(short_home, kTick); });
   EXPECT_NE(error.find("left_home has 6 values"), std::string::npos) << error;
+  DualArmParams own_tick;
+  own_tick.control.time_step = kTick / 2;
+  const std::string tick = testing::config_error_of([&] { DualArm(own_tick, kTick); });
+  EXPECT_NE(tick.find("control.time_step"), std::string::npos) << tick;
+  own_tick.control.time_step = kTick;
+  EXPECT_NO_THROW(DualArm(own_tick, kTick));
 }
 
 }  // namespace
