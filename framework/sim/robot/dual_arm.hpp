@@ -56,7 +56,8 @@ struct DualArmParams {
     f("left_home", left_home, "left arm joint positions at reset (rad)");
     f("right_home", right_home, "right arm joint positions at reset (rad)");
     f("ik", ik, "inverse kinematics");
-    f("control", control, "joint control and its failure bounds");
+    f("control", control,
+      "joint control and its failure bounds (its time_step is the task's tick: leave it out)");
     f("touching_links", touching_links,
       "links that may touch one another (every pair of them is no self collision)");
   }

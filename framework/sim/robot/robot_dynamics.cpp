@@ -316,9 +316,9 @@ Eigen::VectorXd RobotDynamics::upper_limits() const {
 namespace {
 
 // Bullet skips a multibody whose link colliders are all asleep (its island's
-// motors, its dynamics and its integration). A braked branch's links are static
-// as well, held as brakes hold them: a moving branch still collides with them
-// but never joins them in its simulation island (which would wake them).
+// motors, its dynamics and its integration). A braked branch's links are also
+// flagged static: a moving branch still collides with them (a self collision)
+// but never joins them in its simulation island, which would wake them.
 void set_braked(btMultiBody& multibody, bool braked) {
   if (braked) {
     multibody.clearVelocities();

@@ -7,8 +7,9 @@
 // (Bullet's MLCP solver with Dantzig's method; its iterative solver only where
 // that fails). A branch holding still is braked: once its joints have reached
 // targets unchanged since the last step, with no target velocity, and stopped
-// (within params.brake_tolerance), it is frozen, not simulated and static to
-// the other branches until its command moves.
+// (within params.brake_tolerance), it is frozen and not simulated until its
+// command moves; its links are flagged static meanwhile so that a moving
+// branch never wakes it through their shared simulation island.
 // Fixed time step, one internal step per tick: a fresh robot replays identically.
 //
 // Model to multibody: see multibody_layout.hpp (fixed joints merged, body

@@ -208,13 +208,17 @@ TEST(RobotDynamics, AnArmMovingIntoABrakedOneIsASelfCollision) {
   robot.reset(start);
   robot.step();
   ASSERT_EQ(robot.braked_branches(), 2);
+  const Eigen::VectorXd braked = robot.positions();
   for (int tick = 1; tick <= 480 && robot.check().empty(); ++tick) {
     robot.set_targets(start + (crossed - start) * std::min(1.0, tick / 240.0));
     robot.step();
-    if (robot.check().empty()) ASSERT_EQ(robot.braked_branches(), 1);  // the left arm
+    if (robot.check().empty()) {
+      ASSERT_EQ(robot.braked_branches(), 1);  // the left arm
+    }
   }
   EXPECT_EQ(robot.check(), "self collision") << robot.failure_detail();
   EXPECT_NE(robot.failure_detail().find("'left_link"), std::string::npos) << robot.failure_detail();
+  EXPECT_EQ(robot.positions().head(7), braked.head(7));  // it never moved, the colliding tick too
 }
 
 TEST(RobotDynamics, LinksOverlappingAtZeroOrListedAreNoSelfCollision) {
