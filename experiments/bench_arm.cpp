@@ -18,12 +18,11 @@
 #include <cmath>
 #include <string>
 
+#include "bench_scripted_trial.hpp"
 #include "core/config/config_loader.hpp"
 #include "core/config/config_reader.hpp"
 #include "envs/corridor_push/corridor_expert.hpp"
 #include "envs/corridor_push/corridor_push.hpp"
-#include "envs/rope_knot/rope_knot_scene.hpp"
-#include "envs/rope_knot/rope_knot_script.hpp"
 #include "sim/robot/arm_kinematics.hpp"
 #include "sim/robot/robot_dynamics.hpp"
 #include "test_arms.hpp"
@@ -93,8 +92,10 @@ void BM_WarmStartedIk(benchmark::State& state) {
 }
 BENCHMARK(BM_WarmStartedIk)->Unit(benchmark::kMicrosecond);
 
-void BM_CorridorTrialOnArms(benchmark::State& state) {
-  CorridorPush env{environment_of<CorridorPushParams>("configs/common/corridor_arms.yaml")};
+// The corridor expert's demonstration of one scenario, again and again; on the
+// arms also the robot's simulated time (real_time_factor, simulated_s).
+void time_corridor_demonstrations(benchmark::State& state, const CorridorPushParams& params) {
+  CorridorPush env{params};
   const Scenario push{{"corridor_offset", 0.021}, {"object_dx", 0.0}, {"object_dy", 0.0}};
   CorridorExpert expert{CorridorExpertParams{}};
   double simulated = 0;
@@ -102,38 +103,29 @@ void BM_CorridorTrialOnArms(benchmark::State& state) {
   for (auto _ : state) {
     expert.demonstrate(env, push, false);
     successes += env.outcome().success;
-    simulated += env.robot()->time();
+    if (env.robot()) simulated += env.robot()->time();
   }
-  state.counters["real_time_factor"] = benchmark::Counter(simulated, benchmark::Counter::kIsRate);
-  state.counters["simulated_s"] = env.robot()->time();
+  if (env.robot()) {
+    state.counters["real_time_factor"] = benchmark::Counter(simulated, benchmark::Counter::kIsRate);
+    state.counters["simulated_s"] = env.robot()->time();
+  }
   state.counters["successes"] = benchmark::Counter(successes, benchmark::Counter::kAvgIterations);
+}
+
+void BM_CorridorTrialOnArms(benchmark::State& state) {
+  time_corridor_demonstrations(
+      state, environment_of<CorridorPushParams>("configs/common/corridor_arms.yaml"));
 }
 BENCHMARK(BM_CorridorTrialOnArms)->Unit(benchmark::kMillisecond);
 
 void BM_CorridorTrialFloating(benchmark::State& state) {
-  CorridorPush env{CorridorPushParams{}};
-  const Scenario push{{"corridor_offset", 0.021}, {"object_dx", 0.0}, {"object_dy", 0.0}};
-  CorridorExpert expert{CorridorExpertParams{}};
-  int successes = 0;
-  for (auto _ : state) {
-    expert.demonstrate(env, push, false);
-    successes += env.outcome().success;
-  }
-  state.counters["successes"] = benchmark::Counter(successes, benchmark::Counter::kAvgIterations);
+  time_corridor_demonstrations(state, CorridorPushParams{});
 }
 BENCHMARK(BM_CorridorTrialFloating)->Unit(benchmark::kMillisecond);
 
 void BM_RopeTrialOnArms(benchmark::State& state) {
   RopeKnotScene scene(environment_of<RopeKnotParams>("configs/common/rope_arms.yaml"));
-  double simulated = 0;
-  int knots = 0;
-  for (auto _ : state) {
-    knots += scripted_trial(scene, {}, true).knot;
-    simulated += scene.time();
-  }
-  state.counters["real_time_factor"] = benchmark::Counter(simulated, benchmark::Counter::kIsRate);
-  state.counters["simulated_s"] = scene.time();
-  state.counters["knots"] = benchmark::Counter(knots, benchmark::Counter::kAvgIterations);
+  time_scripted_trials(state, scene);
 }
 BENCHMARK(BM_RopeTrialOnArms)->Unit(benchmark::kMillisecond);
 

@@ -15,6 +15,7 @@
 
 #include "envs/rope_knot/knot_check.hpp"
 
+#include "bench_scripted_trial.hpp"
 #include "envs/rope_knot/rope_knot_scene.hpp"
 #include "envs/rope_knot/rope_knot_script.hpp"
 #include "sim/soft/rope.hpp"
@@ -38,15 +39,7 @@ BENCHMARK(BM_RopeStep);
 
 void BM_ScriptedTrial(benchmark::State& state) {
   RopeKnotScene scene(RopeKnotParams{});
-  double simulated = 0;
-  int knots = 0;
-  for (auto _ : state) {
-    knots += scripted_trial(scene, {}, true).knot;
-    simulated += scene.time();
-  }
-  state.counters["real_time_factor"] = benchmark::Counter(simulated, benchmark::Counter::kIsRate);
-  state.counters["simulated_s"] = scene.time();
-  state.counters["knots"] = benchmark::Counter(knots, benchmark::Counter::kAvgIterations);
+  time_scripted_trials(state, scene);
 }
 BENCHMARK(BM_ScriptedTrial)->Unit(benchmark::kMillisecond);
 
