@@ -12,8 +12,6 @@
 namespace corrmp {
 namespace {
 
-using Vector6 = Eigen::Matrix<double, 6, 1>;
-
 Eigen::Vector3d eigen_vector(const KDL::Vector& v) { return Eigen::Vector3d(v.x(), v.y(), v.z()); }
 
 Eigen::Isometry3d isometry_of(const KDL::Frame& frame) {
@@ -63,6 +61,9 @@ ArmKinematics::ArmKinematics(const RobotModel& model, const std::string& base,
   const int n = static_cast<int>(names_.size());
   if (n == 0)
     throw ConfigError(model.source + ": no movable joint from '" + base + "' to '" + tool + "'");
+  if (n > kMaxJoints)
+    throw ConfigError(model.source + ": " + std::to_string(n) + " movable joints from '" + base +
+                      "' to '" + tool + "', an arm may have at most " + std::to_string(kMaxJoints));
   lower_.resize(n);
   upper_.resize(n);
   for (int j = 0; j < n; ++j) {
@@ -76,11 +77,10 @@ ArmKinematics::ArmKinematics(const RobotModel& model, const std::string& base,
     for (int j = 0; j < n; ++j) restart_seeds_(j, s) = rng.uniform(lower_(j), upper_(j));
 }
 
-Eigen::Isometry3d ArmKinematics::pose_and_jacobian(const Eigen::VectorXd& q,
-                                                   Jacobian* jacobian) const {
+Eigen::Isometry3d ArmKinematics::pose_and_jacobian(const JointVector& q, Jacobian* jacobian) const {
   const int n = joints();
   // Each movable joint's axis and a point on it, in the base frame.
-  Eigen::Matrix<double, 3, Eigen::Dynamic> axes(3, n), points(3, n);
+  Eigen::Matrix<double, 3, Eigen::Dynamic, 0, 3, kMaxJoints> axes(3, n), points(3, n);
   KDL::Frame frame = KDL::Frame::Identity();
   int j = 0;
   for (const KDL::Segment& segment : chain_.segments) {
@@ -112,69 +112,85 @@ Eigen::Isometry3d ArmKinematics::pose_and_jacobian(const Eigen::VectorXd& q,
 }
 
 Eigen::Isometry3d ArmKinematics::forward(const Eigen::VectorXd& q) const {
+  if (q.size() != joints())
+    throw std::invalid_argument("ArmKinematics::forward: " + std::to_string(q.size()) +
+                                " joint positions, the arm has " + std::to_string(joints()));
   return pose_and_jacobian(q, nullptr);
 }
 
-int ArmKinematics::descend(const Eigen::Isometry3d& target, Eigen::VectorXd& q,
-                           bool respect_limits) const {
+int ArmKinematics::descend(const Eigen::Isometry3d& target, JointVector& q, bool respect_limits,
+                           Eigen::Isometry3d& pose) const {
   // Residuals in units of their tolerances: the tool's position and rotation
   // errors, then for each joint how far it is outside its limits (narrowed by
   // a small margin). The descent goes a hundred times further than the
   // tolerances so that nearby targets give nearby solutions.
+  using JointMatrix =
+      Eigen::Matrix<double, Eigen::Dynamic, Eigen::Dynamic, 0, kMaxJoints, kMaxJoints>;
+  using Vector6 = Eigen::Matrix<double, 6, 1>;
   const int n = joints();
-  const double limit_margin = 1e-3;     // rad or m
-  const double limit_tolerance = 1e-2;  // rad or m
-  Eigen::VectorXd weights(6 + n);
+  const double limit_margin = 1e-3;  // rad or m
+  const double limit_weight = 1e2;   // 1 / the limit residual's tolerance (rad or m)
+  Vector6 weights;
   weights << Eigen::Vector3d::Constant(1.0 / params_.position_tolerance),
-      Eigen::Vector3d::Constant(1.0 / params_.orientation_tolerance),
-      Eigen::VectorXd::Constant(n, 1.0 / limit_tolerance);
+      Eigen::Vector3d::Constant(1.0 / params_.orientation_tolerance);
   const double unbounded = respect_limits ? 0.0 : INFINITY;
-  const Eigen::VectorXd low = lower_.array() + limit_margin - unbounded;
-  const Eigen::VectorXd high = upper_.array() - limit_margin + unbounded;
+  const JointVector low = lower_.array() + limit_margin - unbounded;
+  const JointVector high = upper_.array() - limit_margin + unbounded;
   const double converged = 1e-2;
-  Jacobian tool_jacobian(6, n);
-  Eigen::MatrixXd jacobian(6 + n, n);
-  auto evaluate = [&](const Eigen::VectorXd& at, Eigen::VectorXd& error, Eigen::MatrixXd& normal,
-                      Eigen::VectorXd& gradient) {
-    const Eigen::Isometry3d pose = pose_and_jacobian(at, &tool_jacobian);
-    error.head<3>() = target.translation() - pose.translation();
-    error.segment<3>(3) = rotation_error(pose.linear(), target.linear());
-    error.tail(n) = at.cwiseMax(low).cwiseMin(high) - at;
-    jacobian.topRows<6>() = tool_jacobian;
-    jacobian.bottomRows(n) = (error.tail(n).array() != 0.0).cast<double>().matrix().asDiagonal();
-    error.array() *= weights.array();
+  // The weighted residuals at a configuration, the normal equations' matrix
+  // and right-hand side: the tool's rows, plus each joint outside its
+  // narrowed limits as a row of its own.
+  struct Residual {
+    Eigen::Isometry3d pose;
+    Vector6 tool;
+    JointVector limits;
+    JointMatrix normal;
+    JointVector gradient;
+    double squared_norm() const { return tool.squaredNorm() + limits.squaredNorm(); }
+  };
+  Jacobian jacobian(6, n);
+  auto evaluate = [&](const JointVector& at, Residual& r) {
+    r.pose = pose_and_jacobian(at, &jacobian);
+    r.tool.head<3>() = target.translation() - r.pose.translation();
+    r.tool.tail<3>() = rotation_error(r.pose.linear(), target.linear());
+    r.tool.array() *= weights.array();
     jacobian = weights.asDiagonal() * jacobian;
-    normal = jacobian.transpose() * jacobian;
-    gradient = jacobian.transpose() * error;
+    r.limits = limit_weight * (at.cwiseMax(low).cwiseMin(high) - at);
+    r.normal.noalias() = jacobian.transpose().lazyProduct(jacobian);
+    r.gradient.noalias() = jacobian.transpose().lazyProduct(r.tool);
+    for (int j = 0; j < n; ++j) {
+      if (r.limits(j) == 0.0) continue;
+      r.normal(j, j) += limit_weight * limit_weight;
+      r.gradient(j) += limit_weight * r.limits(j);
+    }
   };
-  auto within = [&](const Eigen::VectorXd& error) {
-    return error.head<3>().norm() <= converged && error.segment<3>(3).norm() <= converged &&
-           error.tail(n).norm() <= converged;
+  auto within = [&](const Residual& r) {
+    return r.tool.head<3>().norm() <= converged && r.tool.tail<3>().norm() <= converged &&
+           r.limits.norm() <= converged;
   };
-  Eigen::VectorXd error(6 + n), trial_error(6 + n);
-  Eigen::MatrixXd normal(n, n), trial_normal(n, n);
-  Eigen::VectorXd gradient(n), trial_gradient(n), step(n), trial(n);
+  Residual current, trial;
+  JointVector step(n), moved(n);
+  JointMatrix damped(n, n);
+  Eigen::LDLT<JointMatrix> ldlt(n);
   wrap_revolute(q);
-  evaluate(q, error, normal, gradient);
-  double damping = 1e-3 * std::max(normal.diagonal().maxCoeff(), 1.0);
+  evaluate(q, current);
+  double damping = 1e-3 * std::max(current.normal.diagonal().maxCoeff(), 1.0);
   double growth = 2.0;
   int iterations = 0;
-  while (iterations < params_.max_iterations && !within(error)) {
+  while (iterations < params_.max_iterations && !within(current)) {
     ++iterations;
-    Eigen::MatrixXd damped = normal;
+    damped = current.normal;
     damped.diagonal().array() += damping;
-    step = damped.ldlt().solve(gradient);
+    step = ldlt.compute(damped).solve(current.gradient);
     if (!(step.norm() > 1e-14 * (1.0 + q.norm()))) break;
-    trial = q + step;
-    wrap_revolute(trial);
-    evaluate(trial, trial_error, trial_normal, trial_gradient);
-    const double predicted = 0.5 * step.dot(damping * step + gradient);
-    const double gain = 0.5 * (error.squaredNorm() - trial_error.squaredNorm()) / predicted;
+    moved = q + step;
+    wrap_revolute(moved);
+    evaluate(moved, trial);
+    const double predicted = 0.5 * step.dot(damping * step + current.gradient);
+    const double gain = 0.5 * (current.squared_norm() - trial.squared_norm()) / predicted;
     if (gain > 0.0) {
-      q = trial;
-      error = trial_error;
-      normal.swap(trial_normal);
-      gradient.swap(trial_gradient);
+      q = moved;
+      std::swap(current, trial);
       damping *= std::max(1.0 / 3.0, 1.0 - std::pow(2.0 * gain - 1.0, 3));
       growth = 2.0;
     } else {
@@ -182,10 +198,11 @@ int ArmKinematics::descend(const Eigen::Isometry3d& target, Eigen::VectorXd& q,
       growth *= 2.0;
     }
   }
+  pose = current.pose;
   return iterations;
 }
 
-void ArmKinematics::wrap_revolute(Eigen::VectorXd& q) const {
+void ArmKinematics::wrap_revolute(JointVector& q) const {
   const double turn = 2.0 * M_PI;
   for (int j = 0; j < q.size(); ++j) {
     if (!revolute_[j] || (q(j) >= lower_(j) && q(j) <= upper_(j))) continue;
@@ -194,7 +211,7 @@ void ArmKinematics::wrap_revolute(Eigen::VectorXd& q) const {
   }
 }
 
-bool ArmKinematics::within_limits(const Eigen::VectorXd& q) const {
+bool ArmKinematics::within_limits(const JointVector& q) const {
   return (q.array() >= lower_.array()).all() && (q.array() <= upper_.array()).all();
 }
 
@@ -209,13 +226,14 @@ IkResult ArmKinematics::solve(const Eigen::Isometry3d& target,
   bool reached = false;
   double best_score = INFINITY;
   for (int attempt = 0; attempt <= params_.restarts; ++attempt) {
-    Eigen::VectorXd q = attempt == 0 ? result.q : Eigen::VectorXd(restart_seeds_.col(attempt - 1));
+    JointVector q =
+        attempt == 0 ? JointVector(result.q) : JointVector(restart_seeds_.col(attempt - 1));
     result.restarts = attempt;
     // Within the limits first; when that fails, ignoring them, to tell a
     // target out of reach from one reached only outside the limits.
     for (const bool respect_limits : {true, false}) {
-      result.iterations += descend(target, q, respect_limits);
-      const Eigen::Isometry3d pose = forward(q);
+      Eigen::Isometry3d pose;
+      result.iterations += descend(target, q, respect_limits, pose);
       const double position = (pose.translation() - target.translation()).norm();
       const double orientation = angle_between(pose.linear(), target.linear());
       const double score =

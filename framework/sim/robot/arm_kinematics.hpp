@@ -62,7 +62,12 @@ const char* to_string(IkResult::Status status);
 
 class ArmKinematics {
  public:
-  // Throws ConfigError when `tool` is not below `base` in the model.
+  // The most movable joints an arm's chain may have: the solver's matrices
+  // live on the stack, sized for this.
+  static constexpr int kMaxJoints = 16;
+
+  // Throws ConfigError when `tool` is not below `base` in the model or the
+  // chain has more than kMaxJoints movable joints.
   ArmKinematics(const RobotModel& model, const std::string& base, const std::string& tool,
                 const IkParams& params = {});
 
@@ -80,17 +85,20 @@ class ArmKinematics {
   IkResult solve(const Eigen::Isometry3d& target, const Eigen::VectorXd& warm_start) const;
 
  private:
-  using Jacobian = Eigen::Matrix<double, 6, Eigen::Dynamic>;
+  using JointVector = Eigen::Matrix<double, Eigen::Dynamic, 1, 0, kMaxJoints, 1>;
+  using Jacobian = Eigen::Matrix<double, 6, Eigen::Dynamic, 0, 6, kMaxJoints>;
   // The tool pose at q and, when `jacobian` is given, the geometric Jacobian
   // (linear rows first) in the base frame.
-  Eigen::Isometry3d pose_and_jacobian(const Eigen::VectorXd& q, Jacobian* jacobian) const;
+  Eigen::Isometry3d pose_and_jacobian(const JointVector& q, Jacobian* jacobian) const;
   // Levenberg-Marquardt from q towards target, pulling joints back inside
-  // their limits when `respect_limits`; returns the iterations.
-  int descend(const Eigen::Isometry3d& target, Eigen::VectorXd& q, bool respect_limits) const;
+  // their limits when `respect_limits`; returns the iterations and sets
+  // `pose` to the tool pose at the final q.
+  int descend(const Eigen::Isometry3d& target, JointVector& q, bool respect_limits,
+              Eigen::Isometry3d& pose) const;
 
   // Shifts revolute joints by whole turns into their limits where that is possible.
-  void wrap_revolute(Eigen::VectorXd& q) const;
-  bool within_limits(const Eigen::VectorXd& q) const;
+  void wrap_revolute(JointVector& q) const;
+  bool within_limits(const JointVector& q) const;
 
   IkParams params_;
   KDL::Chain chain_;
