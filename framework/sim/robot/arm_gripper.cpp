@@ -62,9 +62,16 @@ ArmGripper::ArmGripper(BulletWorld& world, const GripperParams& params, DualArm&
 void ArmGripper::place_bodies() {
   gripper_.place(robot_.tool_position(arm_));
   const std::vector<Eigen::Isometry3d> poses = robot_.shape_poses();
+  placed_.resize(poses.size());
   size_t body = 0;
   for (size_t s = 0; s < poses.size(); ++s) {
-    if (shown_[s]) world_.set_pose(arm_bodies_[body++], poses[s]);
+    if (!shown_[s]) continue;
+    // A body left where it is moves exactly as one placed there again.
+    if (!placed_[s] || placed_[s]->matrix() != poses[s].matrix()) {
+      world_.set_pose(arm_bodies_[body], poses[s]);
+      placed_[s] = poses[s];
+    }
+    ++body;
   }
 }
 

@@ -8,6 +8,7 @@
 #pragma once
 
 #include <memory>
+#include <optional>
 #include <vector>
 
 #include "sim/bullet_world.hpp"
@@ -45,6 +46,7 @@ class ArmGripper : public Gripper {
   KinematicGripper gripper_;
   std::vector<bool> shown_;  // per DualArm::shapes() entry: has a world body
   std::vector<int> arm_bodies_;
+  std::vector<std::optional<Eigen::Isometry3d>> placed_;  // per entry: its body's last pose
 };
 
 }  // namespace corrmp

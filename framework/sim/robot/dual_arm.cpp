@@ -71,6 +71,7 @@ DualArm::DualArm(const DualArmParams& params, double time_step) : params_(params
                     std::filesystem::exists(urdf) ? "is not a regular file" : "no such URDF file"));
   }
   model_ = load_robot_model(urdf);
+  for (const RobotLink& link : model_.links) shape_count_ += link.collisions.size();
   if (params.base_position.size() != 3) {
     throw ConfigError(fmt::format("{}: base_position has {} values, not 3", params.urdf,
                                   params.base_position.size()));
@@ -273,6 +274,7 @@ std::vector<PlacedShape> DualArm::shapes() const {
 
 std::vector<Eigen::Isometry3d> DualArm::shape_poses() const {
   std::vector<Eigen::Isometry3d> poses;
+  poses.reserve(shape_count_);
   for (size_t i = 0; i < model_.links.size(); ++i) {
     const RobotLink& link = model_.links[i];
     if (link.collisions.empty()) continue;

@@ -133,6 +133,7 @@ class DualArm {
   struct ArmState;
   DualArmParams params_;
   RobotModel model_;
+  size_t shape_count_ = 0;  // collision shapes of all links
   std::unique_ptr<RobotDynamics> dynamics_;
   std::array<std::unique_ptr<ArmState>, 2> arms_;
   int base_link_ = -1;  // index into the model's links

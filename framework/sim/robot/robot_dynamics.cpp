@@ -138,6 +138,8 @@ RobotDynamics::RobotDynamics(
       layout_(make_multibody_layout(model)),
       bullet_(std::make_unique<Bullet>()) {
   for (int j : layout_.movable_joints) joint_names_.push_back(model_.joints[j].name);
+  for (const LinkPlacement& placement : layout_.links)
+    link_in_com_.push_back(layout_.bodies[placement.body].com.inverse() * placement.in_body);
   bullet_->world.setGravity(btVector3(0, 0, -params_.gravity));
   bullet_->world.getSolverInfo().m_numIterations = params_.solver_iterations;
   build_multibody(base_pose);
@@ -493,7 +495,7 @@ Eigen::Isometry3d RobotDynamics::link_pose(int link) const {
   const int body_link = bullet_->body_link[placement.body];
   const btTransform com = body_link < 0 ? multibody.getBaseWorldTransform()
                                         : multibody.getLink(body_link).m_cachedWorldTransform;
-  return from_bullet(com) * layout_.bodies[placement.body].com.inverse() * placement.in_body;
+  return from_bullet(com) * link_in_com_[link];
 }
 
 bool RobotDynamics::fail(const std::string& category, const std::string& detail) {

@@ -149,6 +149,8 @@ class RobotDynamics {
   RobotDynamicsParams params_;
   MultibodyLayout layout_;
   std::vector<std::string> joint_names_;
+  // Per model link: its frame in its body's centre-of-mass frame.
+  std::vector<Eigen::Isometry3d> link_in_com_;
   std::unique_ptr<Bullet> bullet_;
   Eigen::VectorXd target_;           // requested, clamped to the limits
   Eigen::VectorXd target_velocity_;  // requested; empty when not given
