@@ -1,12 +1,11 @@
-// The Bullet multibody robot: construction from the layout, joint motors and
-// the per-tick checks.
+// The Bullet multibody robot: construction from the layout, the joint
+// controller's torques and the per-tick checks.
 #include "sim/robot/robot_dynamics.hpp"
 
 #include <BulletDynamics/Featherstone/btMultiBody.h>
 #include <BulletDynamics/Featherstone/btMultiBodyConstraintSolver.h>
 #include <BulletDynamics/Featherstone/btMultiBodyDynamicsWorld.h>
 #include <BulletDynamics/Featherstone/btMultiBodyJointLimitConstraint.h>
-#include <BulletDynamics/Featherstone/btMultiBodyJointMotor.h>
 #include <BulletDynamics/Featherstone/btMultiBodyLinkCollider.h>
 #include <BulletDynamics/Featherstone/btMultiBodyMLCPConstraintSolver.h>
 #include <BulletDynamics/MLCPSolvers/btDantzigSolver.h>
@@ -16,6 +15,8 @@
 #include <algorithm>
 #include <cmath>
 #include <stdexcept>
+
+#include "sim/robot/joint_torques.hpp"
 
 namespace corrmp {
 
@@ -116,14 +117,13 @@ struct RobotDynamics::Bullet {
   std::vector<int> body_link;       // per layout body: its link there, -1 for the root
   std::vector<std::unique_ptr<btCollisionShape>> shapes;
   std::vector<std::unique_ptr<RobotLinkCollider>> colliders;  // per body; null without shapes
-  std::vector<std::unique_ptr<btMultiBodyJointMotor>> motors;
+  std::vector<std::vector<int>> branch_joints;  // per multibody, per link: its joint index
   std::vector<std::unique_ptr<btMultiBodyJointLimitConstraint>> limits;
   btAlignedObjectArray<btQuaternion> scratch_rotations;
   btAlignedObjectArray<btVector3> scratch_origins;
 
   ~Bullet() {
     for (auto& limit : limits) world.removeMultiBodyConstraint(limit.get());
-    for (auto& motor : motors) world.removeMultiBodyConstraint(motor.get());
     for (auto& collider : colliders)
       if (collider) world.removeCollisionObject(collider.get());
     for (auto& multibody : multibodies) world.removeMultiBody(multibody.get());
@@ -144,7 +144,7 @@ RobotDynamics::RobotDynamics(
   bullet_->world.getSolverInfo().m_numIterations = params_.solver_iterations;
   build_multibody(base_pose);
   build_colliders();
-  build_motors();
+  build_limits();
   allow_contacts_at_zero(allowed_contacts);
   reset(Eigen::VectorXd::Zero(dof()));
 }
@@ -250,16 +250,16 @@ void RobotDynamics::build_colliders() {
   }
 }
 
-void RobotDynamics::build_motors() {
+void RobotDynamics::build_limits() {
+  bullet_->branch_joints.resize(bullet_->multibodies.size());
+  for (size_t m = 0; m < bullet_->multibodies.size(); ++m)
+    bullet_->branch_joints[m].resize(bullet_->multibodies[m]->getNumLinks());
   for (int i = 0; i < dof(); ++i) {
     const RobotJoint& joint = model_.joints[layout_.movable_joints[i]];
-    btMultiBody* multibody = bullet_->multibodies[bullet_->body_multibody[i + 1]].get();
+    const int m = bullet_->body_multibody[i + 1];
+    btMultiBody* multibody = bullet_->multibodies[m].get();
     const int link = bullet_->body_link[i + 1];
-    auto motor = std::make_unique<btMultiBodyJointMotor>(multibody, link, 0.0,
-                                                         joint.effort * params_.time_step);
-    motor->setRhsClamp(joint.velocity);
-    bullet_->world.addMultiBodyConstraint(motor.get());
-    bullet_->motors.push_back(std::move(motor));
+    bullet_->branch_joints[m][link] = i;
     auto limit = std::make_unique<btMultiBodyJointLimitConstraint>(multibody, link, joint.lower,
                                                                    joint.upper);
     bullet_->world.addMultiBodyConstraint(limit.get());
@@ -313,6 +313,12 @@ Eigen::VectorXd RobotDynamics::upper_limits() const {
   Eigen::VectorXd upper(dof());
   for (int i = 0; i < dof(); ++i) upper[i] = model_.joints[layout_.movable_joints[i]].upper;
   return upper;
+}
+
+Eigen::VectorXd RobotDynamics::velocity_limits() const {
+  Eigen::VectorXd limits(dof());
+  for (int i = 0; i < dof(); ++i) limits[i] = model_.joints[layout_.movable_joints[i]].velocity;
+  return limits;
 }
 
 namespace {
@@ -398,22 +404,88 @@ void RobotDynamics::set_targets(const Eigen::VectorXd& positions,
 void RobotDynamics::step() {
   release_moved_brakes();
   const double dt = params_.time_step;
+  Eigen::VectorXd velocity_target(dof()), position_target(dof());
   for (int i = 0; i < dof(); ++i) {
     const double limit = model_.joints[layout_.movable_joints[i]].velocity;
     const double move = clamp(target_[i] - motor_target_[i], -limit * dt, limit * dt);
     motor_target_[i] += move;
-    const double velocity =
+    velocity_target[i] =
         target_velocity_.size() != 0 ? clamp(target_velocity_[i], -limit, limit) : move / dt;
-    // The motor's position term is the error left after moving at the target
-    // velocity for this tick, so a joint on its trajectory gets no extra push.
-    bullet_->motors[i]->setPositionTarget(motor_target_[i] - velocity * dt, params_.position_gain);
-    bullet_->motors[i]->setVelocityTarget(velocity, params_.velocity_gain);
+    // The position term is the error left after moving at the target velocity
+    // for this tick, so a joint on its trajectory gets no extra push.
+    position_target[i] = motor_target_[i] - velocity_target[i] * dt;
+  }
+  for (size_t m = 0; m < bullet_->multibodies.size(); ++m) {
+    if (!bullet_->braked[m])
+      apply_joint_torques(static_cast<int>(m), position_target, velocity_target);
   }
   bullet_->world.stepSimulation(dt, 0, dt);
   time_ += dt;
   update_kinematics();
   brake_still_branches();
   run_checks();
+}
+
+void RobotDynamics::apply_joint_torques(int branch, const Eigen::VectorXd& position_target,
+                                        const Eigen::VectorXd& velocity_target) {
+  btMultiBody& multibody = *bullet_->multibodies[branch];
+  const std::vector<int>& joints = bullet_->branch_joints[branch];
+  const int n = multibody.getNumLinks();
+  const double dt = params_.time_step;
+  std::vector<ChainBody> bodies(n);
+  Eigen::VectorXd qd(n), target(n), effort(n);
+  for (int link = 0; link < n; ++link) {
+    const btMultibodyLink& bullet_link = multibody.getLink(link);
+    const btTransform& frame = bullet_link.m_cachedWorldTransform;
+    const Eigen::Matrix3d rotation = from_bullet(frame).linear();
+    ChainBody& body = bodies[link];
+    body.parent = bullet_link.m_parent;
+    body.revolute = bullet_link.m_jointType == btMultibodyLink::eRevolute;
+    body.mass = bullet_link.m_mass;
+    const btVector3& inertia = bullet_link.m_inertiaLocal;
+    body.inertia = rotation * Eigen::Vector3d(inertia.x(), inertia.y(), inertia.z()).asDiagonal() *
+                   rotation.transpose();
+    body.com = from_bullet(frame).translation();
+    const btVector3& axis =
+        body.revolute ? bullet_link.m_axes[0].m_topVec : bullet_link.m_axes[0].m_bottomVec;
+    body.axis = rotation * Eigen::Vector3d(axis.x(), axis.y(), axis.z());
+    const btVector3& to_com = bullet_link.m_dVector;
+    body.pivot = body.com - rotation * Eigen::Vector3d(to_com.x(), to_com.y(), to_com.z());
+    const int i = joints[link];
+    const RobotJoint& joint = model_.joints[layout_.movable_joints[i]];
+    qd[link] = multibody.getJointVel(link);
+    effort[link] = joint.effort;
+    // The velocity the joint is driven to: the position term's share of the
+    // error per tick plus the velocity term's blend of the target velocity
+    // and the joint's velocity after the tick's gravity (that blend needs the
+    // inertia below unless velocity_gain is 1).
+    target[link] = params_.position_gain * (position_target[i] - multibody.getJointPos(link)) / dt +
+                   params_.velocity_gain * velocity_target[i];
+  }
+  const Eigen::Vector3d gravity(0.0, 0.0, -params_.gravity);
+  const bool blended = params_.velocity_gain != 1.0;
+  Eigen::VectorXd tau;
+  if (!blended) {
+    for (int link = 0; link < n; ++link) {
+      const double limit = model_.joints[layout_.movable_joints[joints[link]]].velocity;
+      target[link] = clamp(target[link], -limit, limit);
+    }
+    tau = inverse_dynamics(bodies, qd, (target - qd) / dt, gravity);
+  }
+  if (blended || (tau.cwiseAbs().array() > effort.array()).any()) {
+    const Eigen::MatrixXd inertia = joint_inertia(bodies);
+    const Eigen::VectorXd bias = inverse_dynamics(bodies, qd, Eigen::VectorXd::Zero(n), gravity);
+    if (blended) {
+      const Eigen::VectorXd after_gravity = qd - dt * inertia.ldlt().solve(bias);
+      for (int link = 0; link < n; ++link) {
+        const double limit = model_.joints[layout_.movable_joints[joints[link]]].velocity;
+        target[link] = clamp(target[link] + (1.0 - params_.velocity_gain) * after_gravity[link],
+                             -limit, limit);
+      }
+    }
+    tau = bounded_joint_forces(inertia, bias, qd, target, effort, dt);
+  }
+  for (int link = 0; link < n; ++link) multibody.addJointTorque(link, tau[link]);
 }
 
 int RobotDynamics::braked_branches() const {

@@ -1,11 +1,15 @@
 // A robot simulated as fixed-base Featherstone multibodies in its own Bullet
 // world, one per branch of its root link (the arms of a fixed torso do not move
-// one another, and the constraint solver's rows cost less on the smaller
-// bodies), tracking commanded joint trajectories with one velocity-limited
-// joint motor per movable joint (the paper's robot controller tracking IK joint
-// trajectories fed at a nominal rate), the motors' rows solved exactly each tick
-// (Bullet's MLCP solver with Dantzig's method; its iterative solver only where
-// that fails). A branch holding still is braked: once its joints have reached
+// one another), tracking commanded joint trajectories (the paper's robot
+// controller tracking IK joint trajectories fed at a nominal rate) with a
+// velocity-limited motor law per joint. Each tick the controller's joint
+// torques come from the robot's inverse dynamics (joint_torques.hpp): every
+// joint reaches the velocity its motor law asks for after the step, unless its
+// effort limit binds; then it is pushed at that limit and the others still
+// reach theirs. Bullet integrates the multibody under those torques; its
+// constraint solver (MLCP with Dantzig's method, the iterative solver only
+// where that fails) handles only joint limits and contacts. A branch holding
+// still is braked: once its joints have reached
 // targets unchanged since the last step, with no target velocity, and stopped
 // (within params.brake_tolerance), it is frozen and not simulated until its
 // command moves; its links are flagged static meanwhile so that a moving
@@ -47,11 +51,11 @@ struct RobotDynamicsParams {
   double time_step = 1.0 / 240.0;
   double gravity = 9.81;
   int solver_iterations = 50;  // of the iterative solver, where the exact solve fails
-  // The motor drives each joint towards the velocity
+  // The motor law: each joint is driven to the velocity
   //   position_gain * (position error) / time_step
   //   + velocity_gain * target_velocity + (1 - velocity_gain) * velocity,
-  // clamped to the joint's velocity limit and reached with at most
-  // effort limit x time_step of impulse per tick.
+  // (velocity: the joint's after this tick's gravity alone), clamped to the
+  // joint's velocity limit, with a torque within its effort limit.
   double position_gain = 0.2;
   double velocity_gain = 1.0;
   double tracking_error_bound = 0.05;  // rad (m for prismatic joints)
@@ -99,6 +103,7 @@ class RobotDynamics {
   int joint_index(const std::string& name) const;  // -1 when absent
   Eigen::VectorXd lower_limits() const;
   Eigen::VectorXd upper_limits() const;
+  Eigen::VectorXd velocity_limits() const;  // rad/s or m/s
 
   // Puts the arm at `q` at rest, holding it there (targets = q), and clears the check.
   void reset(const Eigen::VectorXd& q);
@@ -136,7 +141,12 @@ class RobotDynamics {
   struct Bullet;
   void build_multibody(const Eigen::Isometry3d& base_pose);
   void build_colliders();
-  void build_motors();
+  void build_limits();
+  // Joint torques for one multibody's joints, applied for the next step: each
+  // joint reaches the velocity its motor law asks for after the step, within
+  // its effort limit.
+  void apply_joint_torques(int branch, const Eigen::VectorXd& position_target,
+                           const Eigen::VectorXd& velocity_target);
   void allow_contacts_at_zero(const std::vector<std::pair<std::string, std::string>>& allowed);
   void update_kinematics();
   bool command_moved(int joint) const;

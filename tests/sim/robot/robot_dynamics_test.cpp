@@ -122,6 +122,55 @@ TEST(RobotDynamics, AJumpIsFollowedAtTheVelocityLimit) {
   EXPECT_LT((robot.positions() - q).cwiseAbs().maxCoeff(), 1e-3);
 }
 
+// The controller's torques come from its own inverse dynamics of the layout;
+// Bullet's forward dynamics of the same bodies must then give every joint the
+// velocity it was sent to, from any state: to Bullet's single precision
+// (about 2e-6 rad/s here; without the gyroscopic term, 7e-4).
+TEST(RobotDynamics, EveryJointReachesItsCommandedVelocityInOneTick) {
+  for (const RobotModel& model :
+       {test::three_joint_arm(), test::seven_joint_arm(), test::dual_arm()}) {
+    RobotDynamics robot(model, RobotDynamicsParams{}, base_pose());
+    for (double phase : {0.0, 1.0, 2.5, 4.0}) {
+      robot.reset(spread(robot, phase) * 0.8);
+      // Up to 1.2 rad/s (0.24 m/s), reached over 0.25 s: the effort limits
+      // never bind, and the velocity-dependent terms count.
+      const int ticks = 60;
+      double worst = 0;
+      for (int tick = 1; tick <= ticks; ++tick) {
+        Eigen::VectorXd velocity(robot.dof());
+        for (int i = 0; i < robot.dof(); ++i)
+          velocity[i] = std::min(0.6 * robot.velocity_limits()[i], 1.2) *
+                        std::sin(2.3 * i + phase) * tick / ticks;
+        robot.set_targets(robot.positions() + velocity * robot.time_step(), velocity);
+        robot.step();
+        ASSERT_EQ(robot.check(), "") << robot.failure_detail();
+        worst = std::max(worst, (robot.velocities() - velocity).cwiseAbs().maxCoeff());
+      }
+      EXPECT_LT(worst, 1e-5) << model.name << " phase " << phase;
+    }
+  }
+}
+
+TEST(RobotDynamics, AJointWhoseEffortLimitBindsIsPushedAtTheLimit) {
+  RobotModel model = test::seven_joint_arm();
+  for (RobotJoint& joint : model.joints)
+    if (joint.name == "joint2") joint.effort = 5.0;  // too weak to hold the arm out
+  RobotDynamics robot(model, RobotDynamicsParams{});
+  Eigen::VectorXd q = Eigen::VectorXd::Zero(robot.dof());
+  q[1] = 1.2;
+  robot.reset(q);
+  const Eigen::VectorXd velocity = Eigen::VectorXd::Zero(robot.dof());
+  robot.set_targets(q, velocity);
+  robot.step();
+  const Eigen::VectorXd after = robot.velocities();
+  for (int i = 0; i < robot.dof(); ++i) {
+    if (i == 1)
+      EXPECT_GT(std::abs(after[i]), 1e-3) << "the weak joint sags";
+    else
+      EXPECT_LT(std::abs(after[i]), 1e-4) << "joint " << i << " still holds";
+  }
+}
+
 TEST(RobotDynamics, FoldingTheArmOntoItselfIsASelfCollision) {
   RobotDynamics robot(test::seven_joint_arm(), RobotDynamicsParams{});
   Eigen::VectorXd folded = Eigen::VectorXd::Zero(robot.dof());
