@@ -150,7 +150,7 @@ void Rope::set_node(int i, const Eigen::Vector3d& position) {
 
 void Rope::self_contact() {
   const int n = node_count();
-  RopeContactState state;
+  RopeContactState& state = contact_;
   state.x.resize(n);
   state.v.resize(n);
   state.inverse_mass.resize(n);

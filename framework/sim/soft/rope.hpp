@@ -10,6 +10,7 @@
 #include <vector>
 
 #include "core/config/field_rule.hpp"
+#include "sim/soft/rope_self_contact.hpp"
 #include "sim/soft/soft_world.hpp"
 
 namespace corrmp {
@@ -93,6 +94,7 @@ class Rope {
   std::unique_ptr<btSoftBody> body_;  // removed from the world before it is destroyed
   std::vector<double> node_mass_;
   std::vector<double> rest_length_;  // per link, Bullet units
+  RopeContactState contact_;         // the self-contact pass's nodes and scratch
 };
 
 // Node positions of a straight rope from `start` along `direction`.

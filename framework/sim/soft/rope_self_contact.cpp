@@ -49,6 +49,54 @@ void closest_parameters(const Eigen::Vector3d& p0, const Eigen::Vector3d& p1,
   }
 }
 
+// The pairs (i, j), j >= i + 3, from `from` on in the order of (i, j), whose
+// segment midpoint sums lie within `window` of each other, into
+// scratch.candidates; false (and no pairs) when a node is not finite, as a
+// sort needs finite keys.
+bool find_candidates(const std::vector<Eigen::Vector3d>& x, double window, std::pair<int, int> from,
+                     RopeContactState::Scratch& scratch) {
+  std::vector<std::pair<int, int>>& candidates = scratch.candidates;
+  candidates.clear();
+  const int segments = static_cast<int>(x.size()) - 1;
+  if (segments <= 0) return true;
+  std::vector<Eigen::Vector3d>& sum = scratch.sum;
+  sum.resize(segments);
+  for (int i = 0; i < segments; ++i) {
+    sum[i] = x[i] + x[i + 1];
+    if (!sum[i].allFinite()) return false;
+  }
+  Eigen::Vector3d lo = sum[0], hi = sum[0];
+  for (const Eigen::Vector3d& s : sum) lo = lo.cwiseMin(s), hi = hi.cwiseMax(s);
+  int axis = 0;  // swept along the axis the rope spans most
+  (hi - lo).maxCoeff(&axis);
+  // The last order along the same axis is nearly sorted: insertion sort finishes it.
+  std::vector<int>& order = scratch.order;
+  auto before = [&](int a, int b) { return sum[a][axis] < sum[b][axis]; };
+  if (static_cast<int>(order.size()) == segments && scratch.axis == axis) {
+    for (int a = 1; a < segments; ++a) {
+      const int moving = order[a];
+      int b = a;
+      for (; b > 0 && before(moving, order[b - 1]); --b) order[b] = order[b - 1];
+      order[b] = moving;
+    }
+  } else {
+    order.resize(segments);
+    for (int i = 0; i < segments; ++i) order[i] = i;
+    std::sort(order.begin(), order.end(), before);
+    scratch.axis = axis;
+  }
+  for (int a = 0; a < segments; ++a) {
+    for (int b = a + 1; b < segments && sum[order[b]][axis] - sum[order[a]][axis] <= window; ++b) {
+      const std::pair<int, int> pair = std::minmax(order[a], order[b]);
+      if (pair.second >= pair.first + 3 && pair >= from &&
+          (sum[pair.first] - sum[pair.second]).squaredNorm() <= window * window)
+        candidates.push_back(pair);
+    }
+  }
+  std::sort(candidates.begin(), candidates.end());
+  return true;
+}
+
 }  // namespace
 
 bool resolve_self_contacts(RopeContactState& state, const RopeContactParams& params,
@@ -62,7 +110,11 @@ bool resolve_self_contacts(RopeContactState& state, const RopeContactParams& par
   for (int i = 0; i + 1 < n; ++i) longest = std::max(longest, (x[i + 1] - x[i]).norm());
   const double reach = longest + contact;
   bool changed = false;
-  double moved = 0;  // bounds how far any node has been pushed in this pass
+  // Per node, a bound on how far it has been pushed since the candidates were
+  // found; `moved` is the largest.
+  std::vector<double>& pushed = state.scratch.pushed;
+  pushed.assign(n, 0.0);
+  double moved = 0;
 
   // Segments i and j (j >= i + 3) in contact are resolved at once, in the
   // order of (i, j); returns whether they were.
@@ -94,14 +146,13 @@ bool resolve_self_contacts(RopeContactState& state, const RopeContactParams& par
       const double limit = params.friction * (normal_impulse + push / params.time_step);
       friction = -std::min(stop, limit) * tangential / slide;
     }
-    double largest = 0;
     for (int m = 0; m < 4; ++m) {
       const double scale = w[m] * im[k[m]];
       x[k[m]] += scale * push * normal;
       v[k[m]] += scale * (normal_impulse * normal + friction);
-      largest = std::max(largest, std::abs(scale * push));
+      pushed[k[m]] += std::abs(scale * push);
+      moved = std::max(moved, pushed[k[m]]);
     }
-    moved += largest;
     return changed = true;
   };
 
@@ -112,48 +163,36 @@ bool resolve_self_contacts(RopeContactState& state, const RopeContactParams& par
   };
 
   // The same pairs in the same order, found faster: a pair whose segment
-  // midpoint sums (x_i + x_i+1) lie further apart than 2 reach + slack at the
-  // start cannot pass resolve()'s first test while the nodes have moved less
-  // than slack / 4 in all; past half of that, the plain sweep takes over.
+  // midpoint sums (x_i + x_i+1) lie further apart than 2 reach + slack when
+  // the candidates are found cannot pass resolve()'s first test while each of
+  // its four nodes has been pushed less than slack / 4 since. Once a node has
+  // been pushed past half of that, the remaining pairs' candidates are found
+  // afresh; after kRounds rounds the plain sweep finishes the pass.
+  constexpr int kRounds = 8;
   const double slack = contact;
   const double window = 2.0 * reach + slack;
-  const int segments = n - 1;
-  std::vector<Eigen::Vector3d> sum(std::max(segments, 0));
-  bool finite = std::isfinite(window);
-  for (int i = 0; i < segments; ++i) {
-    sum[i] = x[i] + x[i + 1];
-    finite = finite && sum[i].allFinite();
-  }
-  if (search == SelfContactSearch::all_pairs || !finite) {  // a sort needs finite keys
-    resolve_all_from(0, 3);
+  std::pair<int, int> next{0, 3};  // the first pair not yet resolved
+  if (search == SelfContactSearch::all_pairs || !std::isfinite(window)) {
+    resolve_all_from(next.first, next.second);
     return changed;
   }
-  int axis = 0;  // swept along the axis the rope spans most
-  if (segments > 0) {
-    Eigen::Vector3d lo = sum[0], hi = sum[0];
-    for (const Eigen::Vector3d& s : sum) lo = lo.cwiseMin(s), hi = hi.cwiseMax(s);
-    (hi - lo).maxCoeff(&axis);
-  }
-  std::vector<int> order(sum.size());
-  for (int i = 0; i < segments; ++i) order[i] = i;
-  std::sort(order.begin(), order.end(), [&](int a, int b) { return sum[a][axis] < sum[b][axis]; });
-  std::vector<std::pair<int, int>> candidates;
-  for (int a = 0; a < segments; ++a) {
-    for (int b = a + 1; b < segments && sum[order[b]][axis] - sum[order[a]][axis] <= window; ++b) {
-      const int i = std::min(order[a], order[b]), j = std::max(order[a], order[b]);
-      if (j >= i + 3 && (sum[i] - sum[j]).squaredNorm() <= window * window)
-        candidates.emplace_back(i, j);
+  for (int round = 0;; ++round) {
+    if (round == kRounds || !find_candidates(x, window, next, state.scratch)) {
+      resolve_all_from(next.first, next.second);
+      return changed;
     }
-  }
-  std::sort(candidates.begin(), candidates.end());
-  for (const auto& [i, j] : candidates) {
-    if (resolve(i, j) && 4.0 * moved > 0.5 * slack) {
-      resolve_all_from(i, j + 1);
-      break;
+    std::fill(pushed.begin(), pushed.end(), 0.0);
+    moved = 0;
+    bool pushed_far = false;
+    for (const auto& [i, j] : state.scratch.candidates) {
+      if (resolve(i, j) && 4.0 * moved > 0.5 * slack) {
+        next = {i, j + 1};
+        pushed_far = true;
+        break;
+      }
     }
+    if (!pushed_far) return changed;
   }
-
-  return changed;
 }
 
 }  // namespace corrmp

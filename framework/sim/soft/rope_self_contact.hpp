@@ -5,15 +5,25 @@
 #pragma once
 
 #include <Eigen/Core>
+#include <utility>
 #include <vector>
 
 namespace corrmp {
 
-// The rope's nodes, changed in place.
+// The rope's nodes, changed in place, and what a pass keeps for the next.
 struct RopeContactState {
   std::vector<Eigen::Vector3d> x;  // positions
   std::vector<Eigen::Vector3d> v;  // velocities
   std::vector<double> inverse_mass;
+
+  // Kept between passes to save work; any content gives the same results.
+  struct Scratch {
+    std::vector<Eigen::Vector3d> sum;  // per segment: x_i + x_i+1
+    std::vector<int> order;            // segments sorted along `axis` at the last pass
+    int axis = -1;
+    std::vector<std::pair<int, int>> candidates;
+    std::vector<double> pushed;  // per node
+  } scratch;
 };
 
 struct RopeContactParams {

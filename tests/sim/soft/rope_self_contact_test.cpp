@@ -53,8 +53,9 @@ RopeContactState coiled(std::uint64_t seed, int nodes, double spacing) {
 }
 
 // The candidates' pass must be the all-pairs pass, bit for bit, pass after
-// pass: from loose coils to knots so tight that the nodes move far enough for
-// the all-pairs sweep to take over midway.
+// pass (each starting from the last one's sweep order): from loose coils to
+// knots so tight that the nodes are pushed far enough for fresh candidates to
+// be found midway, round after round, and for the all-pairs sweep to finish.
 TEST(RopeSelfContact, TheCandidatesGiveExactlyTheAllPairsResults) {
   const RopeContactParams params{0.05, 0.5, 1.0 / 600.0};
   int passes_with_contacts = 0;
