@@ -436,8 +436,8 @@ void RobotDynamics::apply_joint_torques(int branch, const Eigen::VectorXd& posit
   Eigen::VectorXd qd(n), target(n), effort(n);
   for (int link = 0; link < n; ++link) {
     const btMultibodyLink& bullet_link = multibody.getLink(link);
-    const btTransform& frame = bullet_link.m_cachedWorldTransform;
-    const Eigen::Matrix3d rotation = from_bullet(frame).linear();
+    const Eigen::Isometry3d frame = from_bullet(bullet_link.m_cachedWorldTransform);
+    const Eigen::Matrix3d rotation = frame.linear();
     ChainBody& body = bodies[link];
     body.parent = bullet_link.m_parent;
     body.revolute = bullet_link.m_jointType == btMultibodyLink::eRevolute;
@@ -445,7 +445,7 @@ void RobotDynamics::apply_joint_torques(int branch, const Eigen::VectorXd& posit
     const btVector3& inertia = bullet_link.m_inertiaLocal;
     body.inertia = rotation * Eigen::Vector3d(inertia.x(), inertia.y(), inertia.z()).asDiagonal() *
                    rotation.transpose();
-    body.com = from_bullet(frame).translation();
+    body.com = frame.translation();
     const btVector3& axis =
         body.revolute ? bullet_link.m_axes[0].m_topVec : bullet_link.m_axes[0].m_bottomVec;
     body.axis = rotation * Eigen::Vector3d(axis.x(), axis.y(), axis.z());

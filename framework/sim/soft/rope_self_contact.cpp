@@ -3,6 +3,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <cstdint>
 #include <utility>
 
 namespace corrmp {
@@ -85,15 +86,25 @@ bool find_candidates(const std::vector<Eigen::Vector3d>& x, double window, std::
     std::sort(order.begin(), order.end(), before);
     scratch.axis = axis;
   }
+  // Found pairs are marked in a bit matrix (row i, column j), whose rows read
+  // in order give them in the order of (i, j) without a sort.
+  const int words = (segments + 63) / 64;
+  std::vector<std::uint64_t>& marked = scratch.marked;
+  marked.assign(static_cast<size_t>(segments) * words, 0);
   for (int a = 0; a < segments; ++a) {
     for (int b = a + 1; b < segments && sum[order[b]][axis] - sum[order[a]][axis] <= window; ++b) {
       const std::pair<int, int> pair = std::minmax(order[a], order[b]);
       if (pair.second >= pair.first + 3 && pair >= from &&
           (sum[pair.first] - sum[pair.second]).squaredNorm() <= window * window)
-        candidates.push_back(pair);
+        marked[pair.first * words + pair.second / 64] |= std::uint64_t{1} << (pair.second % 64);
     }
   }
-  std::sort(candidates.begin(), candidates.end());
+  for (int i = 0; i < segments; ++i) {
+    for (int w = 0; w < words; ++w) {
+      for (std::uint64_t bits = marked[i * words + w]; bits != 0; bits &= bits - 1)
+        candidates.emplace_back(i, w * 64 + __builtin_ctzll(bits));
+    }
+  }
   return true;
 }
 

@@ -5,6 +5,7 @@
 #pragma once
 
 #include <Eigen/Core>
+#include <cstdint>
 #include <utility>
 #include <vector>
 
@@ -22,7 +23,8 @@ struct RopeContactState {
     std::vector<int> order;            // segments sorted along `axis` at the last pass
     int axis = -1;
     std::vector<std::pair<int, int>> candidates;
-    std::vector<double> pushed;  // per node
+    std::vector<std::uint64_t> marked;  // candidate pairs as bits, row i, column j
+    std::vector<double> pushed;         // per node
   } scratch;
 };
 
