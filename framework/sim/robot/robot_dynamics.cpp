@@ -324,7 +324,8 @@ Eigen::VectorXd RobotDynamics::velocity_limits() const {
 namespace {
 
 // Bullet skips a multibody whose link colliders are all asleep (its island's
-// motors, its dynamics and its integration). A braked branch's links are also
+// constraints, its dynamics and its integration; the controller gives it no
+// torques). A braked branch's links are also
 // flagged static: a moving branch still collides with them (a self collision)
 // but never joins them in its simulation island, which would wake them.
 void set_braked(btMultiBody& multibody, bool braked) {
