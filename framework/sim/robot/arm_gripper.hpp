@@ -31,7 +31,8 @@ class ArmGripper : public Gripper {
   TrackingResult follow(const Eigen::MatrixXd& waypoints,
                         const std::function<std::string()>& check) override;
 
-  // The world bodies of the arms' shapes, in DualArm::shapes() order.
+  // The world bodies of the arms' shapes, in DualArm::shapes() order. Only this
+  // gripper places them (it skips a body whose pose has not changed).
   const std::vector<int>& arm_bodies() const { return arm_bodies_; }
 
  private:

@@ -76,7 +76,8 @@ class ArmKinematics {
   const Eigen::VectorXd& upper() const { return upper_; }
   const std::vector<std::string>& joint_names() const { return names_; }
 
-  // The tool frame in the base frame at joint positions q.
+  // The tool frame in the base frame at joint positions q (std::invalid_argument
+  // unless q has joints() entries).
   Eigen::Isometry3d forward(const Eigen::VectorXd& q) const;
 
   // Joint positions putting the tool frame at `target` (in the base frame),

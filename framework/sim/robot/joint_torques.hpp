@@ -40,4 +40,11 @@ Eigen::VectorXd bounded_joint_forces(const Eigen::MatrixXd& inertia, const Eigen
                                      const Eigen::VectorXd& qd, const Eigen::VectorXd& target,
                                      const Eigen::VectorXd& effort, double dt);
 
+// The same forces by projected Gauss-Seidel sweeps from `start`: slower, but
+// always converging; bounded_joint_forces falls back on it where its active
+// set does not settle.
+Eigen::VectorXd bounded_joint_forces_by_sweeps(
+    const Eigen::MatrixXd& inertia, const Eigen::VectorXd& bias, const Eigen::VectorXd& qd,
+    const Eigen::VectorXd& target, const Eigen::VectorXd& effort, double dt, Eigen::VectorXd start);
+
 }  // namespace corrmp

@@ -54,7 +54,7 @@ struct RobotDynamicsParams {
   // The motor law: each joint is driven to the velocity
   //   position_gain * (position error) / time_step
   //   + velocity_gain * target_velocity + (1 - velocity_gain) * velocity,
-  // (velocity: the joint's after this tick's gravity alone), clamped to the
+  // (velocity: the joint's after this tick with no joint torque), clamped to the
   // joint's velocity limit, with a torque within its effort limit.
   double position_gain = 0.2;
   double velocity_gain = 1.0;

@@ -86,23 +86,32 @@ bool find_candidates(const std::vector<Eigen::Vector3d>& x, double window, std::
     std::sort(order.begin(), order.end(), before);
     scratch.axis = axis;
   }
-  // Found pairs are marked in a bit matrix (row i, column j), whose rows read
-  // in order give them in the order of (i, j) without a sort.
-  const int words = (segments + 63) / 64;
+  // Found pairs are marked in a bit matrix (row i, column j), whose marked
+  // rows read in order give them in the order of (i, j) without a sort; reading
+  // clears it again, so only its marked rows cost anything.
+  const size_t words = (segments + 63) / 64;
   std::vector<std::uint64_t>& marked = scratch.marked;
-  marked.assign(static_cast<size_t>(segments) * words, 0);
+  if (marked.size() != segments * words) marked.assign(segments * words, 0);
+  std::vector<int>& rows = scratch.rows;
+  rows.clear();
   for (int a = 0; a < segments; ++a) {
     for (int b = a + 1; b < segments && sum[order[b]][axis] - sum[order[a]][axis] <= window; ++b) {
       const std::pair<int, int> pair = std::minmax(order[a], order[b]);
       if (pair.second >= pair.first + 3 && pair >= from &&
-          (sum[pair.first] - sum[pair.second]).squaredNorm() <= window * window)
+          (sum[pair.first] - sum[pair.second]).squaredNorm() <= window * window) {
         marked[pair.first * words + pair.second / 64] |= std::uint64_t{1} << (pair.second % 64);
+        rows.push_back(pair.first);
+      }
     }
   }
-  for (int i = 0; i < segments; ++i) {
-    for (int w = 0; w < words; ++w) {
-      for (std::uint64_t bits = marked[i * words + w]; bits != 0; bits &= bits - 1)
-        candidates.emplace_back(i, w * 64 + __builtin_ctzll(bits));
+  std::sort(rows.begin(), rows.end());
+  rows.erase(std::unique(rows.begin(), rows.end()), rows.end());
+  for (const int i : rows) {
+    for (size_t w = 0; w < words; ++w) {
+      std::uint64_t& word = marked[i * words + w];
+      for (std::uint64_t bits = word; bits != 0; bits &= bits - 1)
+        candidates.emplace_back(i, static_cast<int>(w * 64) + __builtin_ctzll(bits));
+      word = 0;
     }
   }
   return true;
@@ -162,7 +171,7 @@ bool resolve_self_contacts(RopeContactState& state, const RopeContactParams& par
       x[k[m]] += scale * push * normal;
       v[k[m]] += scale * (normal_impulse * normal + friction);
       pushed[k[m]] += std::abs(scale * push);
-      moved = std::max(moved, pushed[k[m]]);
+      if (!(pushed[k[m]] <= moved)) moved = pushed[k[m]];  // a NaN push too
     }
     return changed = true;
   };
@@ -183,12 +192,17 @@ bool resolve_self_contacts(RopeContactState& state, const RopeContactParams& par
   const double slack = contact;
   const double window = 2.0 * reach + slack;
   std::pair<int, int> next{0, 3};  // the first pair not yet resolved
+  state.scratch.rounds = 0;
+  state.scratch.swept = true;
   if (search == SelfContactSearch::all_pairs || !std::isfinite(window)) {
     resolve_all_from(next.first, next.second);
     return changed;
   }
+  state.scratch.swept = false;
   for (int round = 0;; ++round) {
+    state.scratch.rounds = round;
     if (round == kRounds || !find_candidates(x, window, next, state.scratch)) {
+      state.scratch.swept = true;
       resolve_all_from(next.first, next.second);
       return changed;
     }
@@ -196,7 +210,7 @@ bool resolve_self_contacts(RopeContactState& state, const RopeContactParams& par
     moved = 0;
     bool pushed_far = false;
     for (const auto& [i, j] : state.scratch.candidates) {
-      if (resolve(i, j) && 4.0 * moved > 0.5 * slack) {
+      if (resolve(i, j) && !(4.0 * moved <= 0.5 * slack)) {
         next = {i, j + 1};
         pushed_far = true;
         break;

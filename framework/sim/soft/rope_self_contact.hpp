@@ -17,14 +17,20 @@ struct RopeContactState {
   std::vector<Eigen::Vector3d> v;  // velocities
   std::vector<double> inverse_mass;
 
-  // Kept between passes to save work; any content gives the same results.
+  // Kept between passes to save work; whatever an earlier pass left here, on
+  // this rope or another, gives the same results.
   struct Scratch {
     std::vector<Eigen::Vector3d> sum;  // per segment: x_i + x_i+1
     std::vector<int> order;            // segments sorted along `axis` at the last pass
     int axis = -1;
     std::vector<std::pair<int, int>> candidates;
-    std::vector<std::uint64_t> marked;  // candidate pairs as bits, row i, column j
+    std::vector<std::uint64_t> marked;  // candidate pairs as bits, row i, column j; all 0
+    std::vector<int> rows;              // the rows with marks
     std::vector<double> pushed;         // per node
+    // What the last pass did: how often it found the candidates afresh midway,
+    // and whether the plain sweep finished it.
+    int rounds = 0;
+    bool swept = false;
   } scratch;
 };
 

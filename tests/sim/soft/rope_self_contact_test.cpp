@@ -58,22 +58,29 @@ RopeContactState coiled(std::uint64_t seed, int nodes, double spacing) {
 // be found midway, round after round, and for the all-pairs sweep to finish.
 TEST(RopeSelfContact, TheCandidatesGiveExactlyTheAllPairsResults) {
   const RopeContactParams params{0.05, 0.5, 1.0 / 600.0};
-  int passes_with_contacts = 0;
+  int passes_with_contacts = 0, passes_found_afresh = 0, passes_swept = 0;
   std::vector<std::pair<std::string, RopeContactState>> ropes;
   for (std::uint64_t seed = 0; seed < 20; ++seed) {
+    const int nodes = seed % 4 == 3 ? 40 : 96;
     for (const double box : {0.3, 0.6, 1.5, 4.0, 20.0})
-      ropes.emplace_back("crumpled in " + std::to_string(box), crumpled(seed, 96, 0.1, box));
+      ropes.emplace_back("crumpled in " + std::to_string(box), crumpled(seed, nodes, 0.1, box));
     for (const double spacing : {0.0999, 0.099, 0.098, 0.095, 0.09})
-      ropes.emplace_back("coiled " + std::to_string(spacing), coiled(seed, 96, spacing));
+      ropes.emplace_back("coiled " + std::to_string(spacing), coiled(seed, nodes, spacing));
   }
+  // One state carries its scratch from rope to rope, of either length.
+  RopeContactState fast;
   for (const auto& [rope, start] : ropes) {
-    RopeContactState fast = start;
-    RopeContactState plain = fast;
+    fast.x = start.x;
+    fast.v = start.v;
+    fast.inverse_mass = start.inverse_mass;
+    RopeContactState plain = start;
     for (int pass = 0; pass < 3; ++pass) {
       const bool fast_changed = resolve_self_contacts(fast, params);
       const bool plain_changed = resolve_self_contacts(plain, params, SelfContactSearch::all_pairs);
       ASSERT_EQ(fast_changed, plain_changed) << rope;
       passes_with_contacts += plain_changed;
+      passes_found_afresh += fast.scratch.rounds > 0 && !fast.scratch.swept;
+      passes_swept += fast.scratch.swept;
       for (size_t i = 0; i < plain.x.size(); ++i) {
         ASSERT_EQ(fast.x[i], plain.x[i]) << rope << ", node " << i;
         ASSERT_EQ(fast.v[i], plain.v[i]) << rope << ", node " << i;
@@ -81,10 +88,15 @@ TEST(RopeSelfContact, TheCandidatesGiveExactlyTheAllPairsResults) {
     }
   }
   EXPECT_GT(passes_with_contacts, 400);
+  EXPECT_GT(passes_found_afresh, 10);  // finished on fresh candidates
+  EXPECT_GT(passes_swept, 10);         // finished by the plain sweep
 }
 
+// A non-finite node goes to the plain sweep; the next, finite pass on the
+// same state is exact again.
 TEST(RopeSelfContact, ANonFiniteNodeIsPassedOnNotSorted) {
   RopeContactState state = crumpled(7, 40, 0.1, 0.5);
+  const RopeContactState finite = state;
   state.x[20] = Eigen::Vector3d(NAN, 0, 0);
   RopeContactState plain = state;
   resolve_self_contacts(state, {0.05, 0.5, 1.0 / 600.0});
@@ -95,6 +107,17 @@ TEST(RopeSelfContact, ANonFiniteNodeIsPassedOnNotSorted) {
   for (size_t i = 0; i < state.x.size(); ++i) {
     EXPECT_TRUE(same(state.x[i], plain.x[i])) << i;
     EXPECT_TRUE(same(state.v[i], plain.v[i])) << i;
+  }
+  EXPECT_TRUE(state.scratch.swept);
+
+  state.x = finite.x;
+  state.v = finite.v;
+  plain = finite;
+  resolve_self_contacts(state, {0.05, 0.5, 1.0 / 600.0});
+  resolve_self_contacts(plain, {0.05, 0.5, 1.0 / 600.0}, SelfContactSearch::all_pairs);
+  for (size_t i = 0; i < state.x.size(); ++i) {
+    EXPECT_EQ(state.x[i], plain.x[i]) << i;
+    EXPECT_EQ(state.v[i], plain.v[i]) << i;
   }
 }
 
