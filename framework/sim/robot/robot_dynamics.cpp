@@ -303,23 +303,19 @@ int RobotDynamics::joint_index(const std::string& name) const {
   return found == joint_names_.end() ? -1 : static_cast<int>(found - joint_names_.begin());
 }
 
-Eigen::VectorXd RobotDynamics::lower_limits() const {
-  Eigen::VectorXd lower(dof());
-  for (int i = 0; i < dof(); ++i) lower[i] = model_.joints[layout_.movable_joints[i]].lower;
-  return lower;
+const RobotJoint& RobotDynamics::joint(int i) const {
+  return model_.joints[layout_.movable_joints[i]];
 }
 
-Eigen::VectorXd RobotDynamics::upper_limits() const {
-  Eigen::VectorXd upper(dof());
-  for (int i = 0; i < dof(); ++i) upper[i] = model_.joints[layout_.movable_joints[i]].upper;
-  return upper;
+Eigen::VectorXd RobotDynamics::per_joint(double RobotJoint::*field) const {
+  Eigen::VectorXd values(dof());
+  for (int i = 0; i < dof(); ++i) values[i] = joint(i).*field;
+  return values;
 }
 
-Eigen::VectorXd RobotDynamics::velocity_limits() const {
-  Eigen::VectorXd limits(dof());
-  for (int i = 0; i < dof(); ++i) limits[i] = model_.joints[layout_.movable_joints[i]].velocity;
-  return limits;
-}
+Eigen::VectorXd RobotDynamics::lower_limits() const { return per_joint(&RobotJoint::lower); }
+Eigen::VectorXd RobotDynamics::upper_limits() const { return per_joint(&RobotJoint::upper); }
+Eigen::VectorXd RobotDynamics::velocity_limits() const { return per_joint(&RobotJoint::velocity); }
 
 namespace {
 
@@ -407,7 +403,7 @@ void RobotDynamics::step() {
   const double dt = params_.time_step;
   Eigen::VectorXd velocity_target(dof()), position_target(dof());
   for (int i = 0; i < dof(); ++i) {
-    const double limit = model_.joints[layout_.movable_joints[i]].velocity;
+    const double limit = joint(i).velocity;
     const double move = clamp(target_[i] - motor_target_[i], -limit * dt, limit * dt);
     motor_target_[i] += move;
     velocity_target[i] =
@@ -434,7 +430,7 @@ void RobotDynamics::apply_joint_torques(int branch, const Eigen::VectorXd& posit
   const int n = multibody.getNumLinks();
   const double dt = params_.time_step;
   std::vector<ChainBody> bodies(n);
-  Eigen::VectorXd qd(n), target(n), effort(n);
+  Eigen::VectorXd qd(n), target(n), effort(n), speed(n);
   for (int link = 0; link < n; ++link) {
     const btMultibodyLink& bullet_link = multibody.getLink(link);
     const Eigen::Isometry3d frame = from_bullet(bullet_link.m_cachedWorldTransform);
@@ -453,37 +449,35 @@ void RobotDynamics::apply_joint_torques(int branch, const Eigen::VectorXd& posit
     const btVector3& to_com = bullet_link.m_dVector;
     body.pivot = body.com - rotation * Eigen::Vector3d(to_com.x(), to_com.y(), to_com.z());
     const int i = joints[link];
-    const RobotJoint& joint = model_.joints[layout_.movable_joints[i]];
     qd[link] = multibody.getJointVel(link);
-    effort[link] = joint.effort;
+    effort[link] = joint(i).effort;
+    speed[link] = joint(i).velocity;
     // The velocity the joint is driven to: the position term's share of the
     // error per tick plus the velocity term's blend of the target velocity
-    // and the joint's velocity after the tick's gravity (that blend needs the
-    // inertia below unless velocity_gain is 1).
+    // and the joint's velocity after the tick with no joint torque (that
+    // blend needs the inertia unless velocity_gain is 1).
     target[link] = params_.position_gain * (position_target[i] - multibody.getJointPos(link)) / dt +
                    params_.velocity_gain * velocity_target[i];
   }
   const Eigen::Vector3d gravity(0.0, 0.0, -params_.gravity);
+  // M(q) and h(q, qd), computed only where needed.
+  Eigen::MatrixXd inertia;
+  Eigen::VectorXd bias;
+  auto find_dynamics = [&] {
+    if (inertia.size() != 0) return;
+    inertia = joint_inertia(bodies);
+    bias = inverse_dynamics(bodies, qd, Eigen::VectorXd::Zero(n), gravity);
+  };
   const bool blended = params_.velocity_gain != 1.0;
-  Eigen::VectorXd tau;
-  if (!blended) {
-    for (int link = 0; link < n; ++link) {
-      const double limit = model_.joints[layout_.movable_joints[joints[link]]].velocity;
-      target[link] = clamp(target[link], -limit, limit);
-    }
-    tau = inverse_dynamics(bodies, qd, (target - qd) / dt, gravity);
+  if (blended) {
+    find_dynamics();
+    target += (1.0 - params_.velocity_gain) * (qd - dt * inertia.ldlt().solve(bias));
   }
+  target = target.cwiseMax(-speed).cwiseMin(speed);
+  Eigen::VectorXd tau;
+  if (!blended) tau = inverse_dynamics(bodies, qd, (target - qd) / dt, gravity);
   if (blended || (tau.cwiseAbs().array() > effort.array()).any()) {
-    const Eigen::MatrixXd inertia = joint_inertia(bodies);
-    const Eigen::VectorXd bias = inverse_dynamics(bodies, qd, Eigen::VectorXd::Zero(n), gravity);
-    if (blended) {
-      const Eigen::VectorXd after_gravity = qd - dt * inertia.ldlt().solve(bias);
-      for (int link = 0; link < n; ++link) {
-        const double limit = model_.joints[layout_.movable_joints[joints[link]]].velocity;
-        target[link] = clamp(target[link] + (1.0 - params_.velocity_gain) * after_gravity[link],
-                             -limit, limit);
-      }
-    }
+    find_dynamics();
     tau = bounded_joint_forces(inertia, bias, qd, target, effort, dt);
   }
   for (int link = 0; link < n; ++link) multibody.addJointTorque(link, tau[link]);

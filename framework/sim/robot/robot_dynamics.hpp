@@ -142,6 +142,9 @@ class RobotDynamics {
   void build_multibody(const Eigen::Isometry3d& base_pose);
   void build_colliders();
   void build_limits();
+  // The i-th movable joint, and one field of each movable joint.
+  const RobotJoint& joint(int i) const;
+  Eigen::VectorXd per_joint(double RobotJoint::*field) const;
   // Joint torques for one multibody's joints, applied for the next step: each
   // joint reaches the velocity its motor law asks for after the step, within
   // its effort limit.
